@@ -1,0 +1,240 @@
+#include "core/tri_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+namespace gr {
+namespace {
+
+/// Union-find with path halving; sizes are fixed at construction.
+class DisjointSets {
+ public:
+  explicit DisjointSets(int n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  int find(int x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<int> parent_;
+};
+
+std::string formatVec(const Vec3& p) {
+  return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()) + ")";
+}
+
+Status validate(const std::vector<Vec3>& positions, const std::vector<Tri>& triangles) {
+  if (positions.empty()) return invalidInput("the mesh has no vertices");
+  if (triangles.empty())
+    return invalidInput("the mesh has no faces (" + std::to_string(positions.size()) +
+                        " vertices): a point cloud cannot carry geodesics");
+  for (size_t v = 0; v < positions.size(); ++v)
+    if (!positions[v].allFinite())
+      return invalidInput("vertex " + std::to_string(v) + " has a non-finite coordinate " +
+                          formatVec(positions[v]));
+  const int n = static_cast<int>(positions.size());
+  for (size_t f = 0; f < triangles.size(); ++f) {
+    const Tri& t = triangles[f];
+    for (int k = 0; k < 3; ++k)
+      if (t[k] < 0 || t[k] >= n)
+        return invalidInput("face " + std::to_string(f) + " references vertex " + std::to_string(t[k]) +
+                            ", which does not exist");
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
+      return degenerate("face " + std::to_string(f) + " uses vertex " +
+                        std::to_string(t[0] == t[1] || t[0] == t[2] ? t[0] : t[1]) +
+                        " twice (remove duplicated vertices and zero-area faces first)");
+  }
+  return Status::ok();
+}
+
+void buildVertexCorners(TriMesh& m) {
+  const int nv = m.vertexCount();
+  m.vertexCornerBegin.assign(nv + 1, 0);
+  for (const Tri& t : m.triangles)
+    for (int v : t) ++m.vertexCornerBegin[v + 1];
+  for (int v = 0; v < nv; ++v) m.vertexCornerBegin[v + 1] += m.vertexCornerBegin[v];
+  m.vertexCorners.resize(3 * m.triangles.size());
+  std::vector<int> fill(m.vertexCornerBegin.begin(), m.vertexCornerBegin.end() - 1);
+  for (int c = 0; c < 3 * m.faceCount(); ++c) m.vertexCorners[fill[m.vertex(c)]++] = c;
+}
+
+/// For each corner, finds the face across its opposite edge by scanning the corners of one
+/// endpoint: O(F * valence), no hash map.
+void buildOppositeCorners(TriMesh& m) {
+  const int nc = 3 * m.faceCount();
+  m.oppositeCorner.assign(nc, kBoundary);
+  for (int c = 0; c < nc; ++c) {
+    const int p = m.vertex(TriMesh::next(c));
+    const int q = m.vertex(TriMesh::prev(c));
+    const int f = TriMesh::face(c);
+    int found = kBoundary;
+    for (const int* it = m.cornersBegin(p); it != m.cornersEnd(p); ++it) {
+      const int g = TriMesh::face(*it);
+      if (g == f) continue;
+      // The corner of g facing edge (p, q) is the one that is neither p nor q.
+      const int a = TriMesh::next(*it), b = TriMesh::prev(*it);
+      int facing = -1;
+      if (m.vertex(a) == q) facing = b;
+      else if (m.vertex(b) == q) facing = a;
+      if (facing < 0) continue;
+      found = (found == kBoundary) ? facing : kNonManifold;
+    }
+    m.oppositeCorner[c] = found;
+  }
+}
+
+void countTopology(TriMesh& m) {
+  Topology& t = m.topology;
+  t = Topology{};
+  const int nv = m.vertexCount();
+  const int nc = 3 * m.faceCount();
+
+  // Edges: each manifold edge is seen from two corners, others from one (boundary) or 3+.
+  int nonManifoldCorners = 0;
+  for (int c = 0; c < nc; ++c) {
+    const int o = m.oppositeCorner[c];
+    if (o == kBoundary) {
+      ++t.boundaryEdges;
+    } else if (o == kNonManifold) {
+      ++nonManifoldCorners;
+    } else if (c < o) {
+      // Consistent orientation: the shared edge runs p->q in one face and q->p in the other.
+      if (m.vertex(TriMesh::next(c)) == m.vertex(TriMesh::next(o))) ++t.inconsistentEdges;
+    }
+  }
+  {  // Non-manifold edges: group their corners by (min, max) endpoint pair.
+    std::vector<std::pair<long long, int>> keys;
+    keys.reserve(nonManifoldCorners);
+    for (int c = 0; c < nc; ++c)
+      if (m.oppositeCorner[c] == kNonManifold) {
+        long long p = m.vertex(TriMesh::next(c)), q = m.vertex(TriMesh::prev(c));
+        if (p > q) std::swap(p, q);
+        keys.push_back({p * nv + q, c});
+      }
+    std::sort(keys.begin(), keys.end());
+    for (size_t i = 0; i < keys.size(); ++i)
+      if (i == 0 || keys[i].first != keys[i - 1].first) ++t.nonManifoldEdges;
+  }
+
+  // Fans around each vertex: corners of v joined through the manifold edges incident to v.
+  DisjointSets fans(nc);
+  for (int c = 0; c < nc; ++c) {
+    // Edge (V(c), V(next c)) is opposite prev(c); cross it to the neighbouring face.
+    const int o = m.oppositeCorner[TriMesh::prev(c)];
+    if (o < 0) continue;
+    const int v = m.vertex(c);
+    const int base = o - o % 3;
+    for (int k = 0; k < 3; ++k)
+      if (m.vertex(base + k) == v) fans.unite(c, base + k);
+  }
+  std::vector<int> roots;
+  for (int v = 0; v < nv; ++v) {
+    if (m.valence(v) == 0) {
+      ++t.isolatedVertices;
+      continue;
+    }
+    roots.clear();
+    for (const int* it = m.cornersBegin(v); it != m.cornersEnd(v); ++it) roots.push_back(fans.find(*it));
+    std::sort(roots.begin(), roots.end());
+    if (std::unique(roots.begin(), roots.end()) - roots.begin() > 1) ++t.nonManifoldVertices;
+  }
+
+  // Components over face-connected vertices.
+  DisjointSets comps(nv);
+  for (const Tri& tri : m.triangles) {
+    comps.unite(tri[0], tri[1]);
+    comps.unite(tri[1], tri[2]);
+  }
+  t.componentOfVertex.assign(nv, -1);
+  std::vector<int> idOfRoot(nv, -1);
+  for (int v = 0; v < nv; ++v) {
+    if (m.valence(v) == 0) continue;
+    int& id = idOfRoot[comps.find(v)];
+    if (id < 0) id = t.components++;
+    t.componentOfVertex[v] = id;
+  }
+
+  // Boundary loops: boundary edges joined at their shared endpoints.
+  DisjointSets loops(nv);
+  std::vector<char> onBoundary(nv, 0);
+  for (int c = 0; c < nc; ++c)
+    if (m.oppositeCorner[c] == kBoundary) {
+      const int p = m.vertex(TriMesh::next(c)), q = m.vertex(TriMesh::prev(c));
+      loops.unite(p, q);
+      onBoundary[p] = onBoundary[q] = 1;
+    }
+  std::vector<char> loopSeen(nv, 0);
+  std::vector<int> loopsOfComponent(t.components, 0);
+  for (int v = 0; v < nv; ++v)
+    if (onBoundary[v] && !loopSeen[loops.find(v)]) {
+      loopSeen[loops.find(v)] = 1;
+      ++t.boundaryLoops;
+      ++loopsOfComponent[t.componentOfVertex[v]];
+    }
+
+  // Euler characteristic per component: chi_i = V_i - E_i + F_i; genus_i = (2 - chi_i - b_i) / 2.
+  // A manifold edge is seen from two corners, a boundary edge from one.
+  std::vector<long long> vCount(t.components, 0), fCount(t.components, 0), eTwice(t.components, 0);
+  for (int v = 0; v < nv; ++v)
+    if (t.componentOfVertex[v] >= 0) ++vCount[t.componentOfVertex[v]];
+  for (const Tri& tri : m.triangles) ++fCount[t.componentOfVertex[tri[0]]];
+  for (int c = 0; c < nc; ++c) {
+    const int o = m.oppositeCorner[c];
+    eTwice[t.componentOfVertex[m.vertex(c)]] += (o == kBoundary) ? 2 : (o >= 0 ? 1 : 0);
+  }
+  long long chiAll = 0;
+  for (int i = 0; i < t.components; ++i) {
+    const long long chiI = vCount[i] - eTwice[i] / 2 + fCount[i];
+    chiAll += chiI;
+    t.genus += static_cast<int>((2 - chiI - loopsOfComponent[i]) / 2);
+  }
+  // Non-manifold edges were left out of the per-component edge counts; subtract them globally.
+  t.eulerCharacteristic = static_cast<int>(chiAll - t.nonManifoldEdges);
+}
+
+}  // namespace
+
+Expected<TriMesh> buildTriMesh(std::vector<Vec3> positions, std::vector<Tri> triangles) {
+  if (Status s = validate(positions, triangles); !s) return s;
+  TriMesh m;
+  m.positions = std::move(positions);
+  m.triangles = std::move(triangles);
+  buildVertexCorners(m);
+  buildOppositeCorners(m);
+  countTopology(m);
+  return m;
+}
+
+double TriMesh::boundingBoxDiagonal() const {
+  if (positions.empty()) return 0.0;
+  Vec3 lo = positions[0], hi = positions[0];
+  for (const Vec3& p : positions) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return (hi - lo).norm();
+}
+
+double TriMesh::meanEdgeLength() const {
+  if (triangles.empty()) return 0.0;
+  double sum = 0.0;
+  for (const Tri& t : triangles)
+    for (int k = 0; k < 3; ++k) sum += (positions[t[k]] - positions[t[(k + 1) % 3]]).norm();
+  return sum / (3.0 * triangles.size());
+}
+
+std::vector<int> facesOfComponent(const TriMesh& mesh, int component) {
+  std::vector<int> faces;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+    if (mesh.topology.componentOfVertex[mesh.triangles[f][0]] == component) faces.push_back(f);
+  return faces;
+}
+
+}  // namespace gr

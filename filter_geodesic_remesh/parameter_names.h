@@ -1,0 +1,11 @@
+// Names of the filters' parameters, as .mlx scripts spell them (resources/*.mlx use the same).
+#pragma once
+
+namespace gr::filters::param {
+
+// Geodesic Distance: Fast Marching from Selected Vertices
+constexpr const char* kUseQualityAsSpeed = "UseQualityAsSpeed";
+constexpr const char* kMaxDistance = "MaxDistance";
+constexpr const char* kColorBy = "ColorBy";
+
+}  // namespace gr::filters::param

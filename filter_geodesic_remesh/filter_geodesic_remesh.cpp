@@ -33,7 +33,7 @@ MeshFilterInterface::FilterClass FilterGeodesicRemeshPlugin::getClass(QAction* a
 
 int FilterGeodesicRemeshPlugin::postCondition(QAction* action) const {
   const auto* s = spec(ID(action));
-  return s ? s->postConditions : MeshModel::MM_NONE;
+  return s ? s->postConditions : int(MeshModel::MM_NONE);
 }
 
 void FilterGeodesicRemeshPlugin::initParameterSet(QAction* action, MeshModel& mesh, RichParameterList& params) {

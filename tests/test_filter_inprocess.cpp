@@ -1,0 +1,226 @@
+// In-process tests of the filters: the plugin class on a real MeshDocument (MeshLab's
+// libmeshlab-common), without meshlabserver. These see what a script run cannot: after a failed
+// filter, the user's mesh (positions, quality, colour, flags, data mask) is exactly as before.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include <common/GLLogStream.h>
+#include <common/meshmodel.h>
+
+#include "core/fast_marching.h"
+#include "filter_geodesic_remesh/filter_geodesic_remesh.h"
+#include "filter_geodesic_remesh/parameter_names.h"
+#include "tests/test_support.h"
+
+namespace gr {
+namespace {
+
+/// Copies a core mesh into a new layer of `doc`.
+MeshModel* addMesh(MeshDocument& doc, const std::vector<Vec3>& positions, const std::vector<Tri>& triangles) {
+  MeshModel* mm = doc.addNewMesh("", "input", true);
+  CMeshO& m = mm->cm;
+  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, positions.size());
+  for (const Vec3& p : positions) (vi++)->P() = CMeshO::CoordType(float(p.x()), float(p.y()), float(p.z()));
+  if (!triangles.empty()) {
+    auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, triangles.size());
+    for (const Tri& t : triangles) {
+      for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t[k]];
+      ++fi;
+    }
+  }
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  return mm;
+}
+
+/// Everything a filter could change in a mesh.
+struct Snapshot {
+  std::vector<float> values;
+  std::vector<unsigned> colorsAndFlags;
+  int mask = 0, vn = 0, fn = 0;
+  explicit Snapshot(const MeshModel& mm) : mask(mm.dataMask()), vn(mm.cm.vn), fn(mm.cm.fn) {
+    for (const auto& v : mm.cm.vert) {
+      for (int k = 0; k < 3; ++k) values.push_back(v.cP()[k]);
+      values.push_back(v.cQ());
+      colorsAndFlags.push_back(*reinterpret_cast<const unsigned*>(&v.cC()[0]));
+      colorsAndFlags.push_back(unsigned(v.Flags()));
+    }
+  }
+  bool operator==(const Snapshot& o) const {
+    // Compare bit patterns so NaN coordinates compare equal to themselves.
+    return mask == o.mask && vn == o.vn && fn == o.fn && colorsAndFlags == o.colorsAndFlags &&
+           values.size() == o.values.size() &&
+           std::equal(values.begin(), values.end(), o.values.begin(),
+                      [](float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; });
+  }
+};
+
+class FilterInProcess : public ::testing::Test {
+ protected:
+  FilterGeodesicRemeshPlugin plugin;
+  GLLogStream log;
+  MeshDocument doc;
+  QAction* action = nullptr;
+  RichParameterList params;
+
+  void SetUp() override {
+    plugin.setLog(&log);
+    for (QAction* a : plugin.actions())
+      if (a->text() == "Geodesic Distance: Fast Marching from Selected Vertices") action = a;
+    ASSERT_NE(action, nullptr);
+  }
+  void declare(MeshModel& mm) {
+    params = RichParameterList();
+    plugin.initParameterSet(action, mm, params);
+  }
+  bool apply() { return plugin.applyFilter(action, doc, params, nullptr); }
+  std::string logText() const {
+    std::string all;
+    for (const auto& entry : log.logStringList()) all += entry.second.toStdString() + "\n";
+    return all;
+  }
+  /// Applies the filter to a bad mesh and checks: false, a message in the log, mesh untouched.
+  void expectCleanFailure(MeshModel& mm, const std::string& expectedMessage) {
+    const Snapshot before(mm);
+    EXPECT_FALSE(apply());
+    EXPECT_NE(plugin.errorMsg().toStdString().find(expectedMessage), std::string::npos)
+        << "errorMessage: " << plugin.errorMsg().toStdString();
+    EXPECT_NE(logText().find(expectedMessage), std::string::npos) << "log:\n" << logText();
+    EXPECT_TRUE(Snapshot(mm) == before) << "a failed filter changed the mesh";
+  }
+};
+
+TEST_F(FilterInProcess, FandiskMatchesCoreAndMarksQualityAndColor) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  mm->cm.vert[0].SetS();
+  mm->cm.vert[3000].SetS();
+  declare(*mm);
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_TRUE(mm->hasDataMask(MeshModel::MM_VERTQUALITY));
+  EXPECT_TRUE(mm->hasDataMask(MeshModel::MM_VERTCOLOR));
+  // The filter converts coordinates to float and back; compare with the core on those.
+  std::vector<Vec3> asFloat;
+  for (const auto& v : mm->cm.vert) asFloat.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
+  const TriMesh same = std::move(buildTriMesh(asFloat, fandisk.triangles)).value();
+  const auto core = fastMarching(same, Metric::uniform(), {0, 3000});
+  ASSERT_TRUE(core);
+  for (int v = 0; v < same.vertexCount(); ++v)
+    ASSERT_NEAR(mm->cm.vert[v].Q(), core->distance[v], 1e-6 * (1 + core->distance[v])) << v;
+  EXPECT_NE(logText().find("Reached 6475 of 6475 vertices"), std::string::npos) << logText();
+}
+
+TEST_F(FilterInProcess, QualityAsSpeedHalvesDistancesForSpeedTwo) {
+  const TriMesh grid = test::planeGrid(10);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  for (auto& v : mm->cm.vert) v.Q() = 2.0f;
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
+  ASSERT_TRUE(apply()) << logText();
+  const auto unit = fastMarching(grid, Metric::uniform(), {0});
+  for (int v = 0; v < grid.vertexCount(); ++v)
+    EXPECT_NEAR(mm->cm.vert[v].Q(), 0.5 * unit->distance[v], 1e-5) << v;
+}
+
+TEST_F(FilterInProcess, MaxDistanceLeavesFarVerticesAtMinusOne) {
+  const TriMesh grid = test::planeGrid(10);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  params.setValue(filters::param::kMaxDistance, AbsPercValue(0.5f));
+  ASSERT_TRUE(apply()) << logText();
+  int reached = 0;
+  for (const auto& v : mm->cm.vert) {
+    EXPECT_TRUE(v.cQ() == -1.0f || (v.cQ() >= 0.0f && v.cQ() <= 0.5f)) << v.cQ();
+    reached += v.cQ() >= 0.0f;
+  }
+  EXPECT_GT(reached, 0);
+  EXPECT_LT(reached, mm->cm.vn);
+  EXPECT_NE(logText().find("were not reached"), std::string::npos) << logText();
+}
+
+TEST_F(FilterInProcess, NoSelection) {
+  const TriMesh grid = test::planeGrid(4);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  declare(*mm);
+  expectCleanFailure(*mm, "no vertex is selected");
+}
+
+TEST_F(FilterInProcess, PointCloud) {
+  MeshModel* mm = addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {});
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  expectCleanFailure(*mm, "the mesh has no faces");
+}
+
+TEST_F(FilterInProcess, EmptyMesh) {
+  MeshModel* mm = addMesh(doc, {}, {});
+  declare(*mm);
+  expectCleanFailure(*mm, "the mesh has no vertices");
+}
+
+TEST_F(FilterInProcess, NanCoordinate) {
+  const TriMesh grid = test::planeGrid(4);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  mm->cm.vert[7].P()[1] = std::numeric_limits<float>::quiet_NaN();
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  expectCleanFailure(*mm, "vertex 7 has a non-finite coordinate");
+}
+
+TEST_F(FilterInProcess, NonManifoldEdge) {
+  MeshModel* mm = addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  expectCleanFailure(*mm, "1 non-manifold edges");
+}
+
+TEST_F(FilterInProcess, FaceRepeatingAVertex) {
+  MeshModel* mm = addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 1, 1}});
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  expectCleanFailure(*mm, "face 1 uses vertex 1 twice");
+}
+
+TEST_F(FilterInProcess, QualityAsSpeedWithZeroOrNegativeSpeed) {
+  for (float bad : {0.0f, -1.0f, std::numeric_limits<float>::quiet_NaN()}) {
+    const TriMesh grid = test::planeGrid(4);
+    MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+    for (auto& v : mm->cm.vert) v.Q() = 1.0f;
+    mm->cm.vert[5].Q() = bad;
+    mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+    mm->cm.vert[0].SetS();
+    declare(*mm);
+    params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
+    expectCleanFailure(*mm, "vertex 5 has");
+  }
+}
+
+TEST_F(FilterInProcess, QualityAsSpeedWithoutQuality) {
+  const TriMesh grid = test::planeGrid(4);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
+  expectCleanFailure(*mm, "the mesh has no per-vertex quality");
+}
+
+TEST_F(FilterInProcess, ImpossibleParameters) {
+  const TriMesh grid = test::planeGrid(4);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  params.setValue(filters::param::kMaxDistance, AbsPercValue(-1.0f));
+  expectCleanFailure(*mm, "MaxDistance must be >= 0");
+  declare(*mm);
+  params.setValue(filters::param::kColorBy, EnumValue(7));
+  expectCleanFailure(*mm, "ColorBy must be 0");
+}
+
+}  // namespace
+}  // namespace gr

@@ -37,7 +37,8 @@ double virtualSourceDistance(double la, double lb, double lc, double da, double 
 
 }  // namespace
 
-FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh) {
+FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric)
+    : mesh_(mesh), splits_(findAcuteSplits(mesh)) {
   const int nv = mesh.vertexCount();
   P_ = metric.isUniform() ? std::vector<double>(nv, 1.0) : metric.P;
   edgeLength_.resize(3 * static_cast<size_t>(mesh.faceCount()));
@@ -80,6 +81,18 @@ void FastMarcher::push(int v, double u, int label) {
   std::push_heap(heap_.begin(), heap_.end(), Later{});
 }
 
+void FastMarcher::relax(int x, double u, int label) {
+  if (u < U_[x]) push(x, u, label);
+}
+
+void FastMarcher::relax(int x, int s, int t, double lxs, double lxt, double lst) {
+  const double p = (P_[x] + P_[s] + P_[t]) * (1.0 / 3.0);
+  const double us = U_[s], ut = U_[t];
+  const double u = p * virtualSourceDistance(lxs, lxt, lst, us / p, ut / p);
+  // Causality: a value below a neighbour's would break the acceptance order (obtuse angles).
+  if (u < U_[x] && u >= std::max(us, ut)) push(x, u, us <= ut ? label_[s] : label_[t]);
+}
+
 Status FastMarcher::propagate(const FastMarchingParams& params, Progress progress) {
   const int nv = mesh_.vertexCount();
   int sinceReport = 0;
@@ -101,34 +114,37 @@ Status FastMarcher::propagate(const FastMarchingParams& params, Progress progres
     }
 
     const double uv = U_[v];
+    const int lv = label_[v];
+    // Triangles around v: each updates its two other vertices.
     for (const int* it = mesh_.cornersBegin(v); it != mesh_.cornersEnd(v); ++it) {
       const int c = *it;
       const int cn = TriMesh::next(c), cp = TriMesh::prev(c);
       const int a = mesh_.vertex(cn), b = mesh_.vertex(cp);
       // |v a| is the edge opposite cp, |v b| opposite cn, |a b| opposite c.
       const double lva = edgeLength_[cp], lvb = edgeLength_[cn], lab = edgeLength_[c];
-      const double pTri = (P_[v] + P_[a] + P_[b]) * (1.0 / 3.0);
-      // Target x in {a, b}; y the third vertex.
       for (int k = 0; k < 2; ++k) {
-        const int x = k == 0 ? a : b;
-        const int y = k == 0 ? b : a;
+        const int x = k == 0 ? a : b, y = k == 0 ? b : a;
         if (frozen_[x]) continue;
-        const double lxv = k == 0 ? lva : lvb;  // |X v|
-        const double lxy = lab;                 // |X y|
-        const double lvy = k == 0 ? lvb : lva;  // |v y|
-        double best = uv + 0.5 * (P_[v] + P_[x]) * lxv;
-        int bestLabel = label_[v];
-        if (frozen_[y]) {
-          const double uy = U_[y];
-          const double d = virtualSourceDistance(lxv, lxy, lvy, uv / pTri, uy / pTri);
-          const double u = pTri * d;
-          if (u < best && u >= std::max(uv, uy)) {
-            best = u;
-            bestLabel = uv <= uy ? label_[v] : label_[y];
-          }
+        const int cx = k == 0 ? cn : cp;           // corner at x in this face
+        const double lxv = k == 0 ? lva : lvb, lvy = k == 0 ? lvb : lva;
+        relax(x, uv + 0.5 * (P_[v] + P_[x]) * lxv, lv);
+        if (frozen_[y]) relax(x, v, y, lxv, lab, lvy);
+        const int split = splits_.splitOfCorner[cx];
+        if (split >= 0) {  // obtuse at x: the virtual triangle x, v, R
+          const AcuteSplit& sp = splits_.splits[split];
+          if (frozen_[sp.vertex])
+            relax(x, v, sp.vertex, lxv, sp.lenXR, mesh_.vertex(TriMesh::next(cx)) == v ? sp.lenAR : sp.lenBR);
         }
-        if (best < U_[x]) push(x, best, bestLabel);
       }
+    }
+    // v as the far vertex R of acute splits: the virtual triangles X, A, R and X, B, R.
+    for (int i = splits_.byVertexBegin[v]; i < splits_.byVertexBegin[v + 1]; ++i) {
+      const AcuteSplit& sp = splits_.splits[splits_.byVertex[i]];
+      const int x = mesh_.vertex(sp.corner);
+      if (frozen_[x]) continue;
+      const int a = mesh_.vertex(TriMesh::next(sp.corner)), b = mesh_.vertex(TriMesh::prev(sp.corner));
+      if (frozen_[a]) relax(x, a, v, edgeLength_[TriMesh::prev(sp.corner)], sp.lenXR, sp.lenAR);
+      if (frozen_[b]) relax(x, b, v, edgeLength_[TriMesh::next(sp.corner)], sp.lenXR, sp.lenBR);
     }
   }
   // Tentative values beyond the limit are not distances: clear them.

@@ -10,8 +10,9 @@
 //          \   |   /
 //              X
 //
-// A triangle update smaller than max(U(A), U(B)) is rejected (it can happen at obtuse angles),
-// so the accepted values never decrease along the acceptance order (monotone) on any mesh.
+// At an obtuse corner X the update also comes from virtual triangles XAR, XRB, where R is found
+// by unfolding across AB (acute_split.h). A triangle update smaller than max(U(A), U(B)) is
+// rejected, so the accepted values never decrease along the acceptance order (monotone).
 // Cost: O(n log n) for n reached vertices; memory: O(V) buffers owned by the FastMarcher and
 // reused across runs (no allocation per vertex in the loop).
 #pragma once
@@ -19,6 +20,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/acute_split.h"
 #include "core/metric.h"
 #include "core/progress.h"
 #include "core/status.h"
@@ -69,8 +71,13 @@ class FastMarcher {
     int v;
   };
   void push(int v, double u, int label);
+  /// Offers x the value u (edge update) with the given label.
+  void relax(int x, double u, int label);
+  /// Offers x the update of the (possibly virtual) triangle x, s, t; s and t are frozen.
+  void relax(int x, int s, int t, double lxs, double lxt, double lst);
 
   const TriMesh& mesh_;
+  AcuteSplits splits_;             ///< obtuse corners and their unfolded acute splits
   std::vector<double> P_;          ///< per vertex; all ones for a uniform metric
   std::vector<double> edgeLength_; ///< per corner: length of the opposite edge
   std::vector<double> U_;

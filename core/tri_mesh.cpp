@@ -124,15 +124,17 @@ void countTopology(TriMesh& m) {
   }
 
   // Fans around each vertex: corners of v joined through the manifold edges incident to v.
+  // Both edges at v are crossed (opposite prev(c) and next(c)), so inconsistently oriented
+  // neighbours are joined too.
   DisjointSets fans(nc);
   for (int c = 0; c < nc; ++c) {
-    // Edge (V(c), V(next c)) is opposite prev(c); cross it to the neighbouring face.
-    const int o = m.oppositeCorner[TriMesh::prev(c)];
-    if (o < 0) continue;
     const int v = m.vertex(c);
-    const int base = o - o % 3;
-    for (int k = 0; k < 3; ++k)
-      if (m.vertex(base + k) == v) fans.unite(c, base + k);
+    for (int o : {m.oppositeCorner[TriMesh::prev(c)], m.oppositeCorner[TriMesh::next(c)]}) {
+      if (o < 0) continue;
+      const int base = o - o % 3;
+      for (int k = 0; k < 3; ++k)
+        if (m.vertex(base + k) == v) fans.unite(c, base + k);
+    }
   }
   std::vector<int> roots;
   for (int v = 0; v < nv; ++v) {

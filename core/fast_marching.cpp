@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "core/eikonal_update.h"
+
 namespace gr {
 namespace {
 
@@ -15,27 +17,13 @@ struct Later {
   }
 };
 
-/// Distance at X from the front known at A and B (see the sketch in the header).
-/// la = |XA|, lb = |XB|, lc = |AB|; da, db = U(A)/P, U(B)/P. Returns the unweighted length |SX|,
-/// or +inf when the triangle cannot give an upwind update.
-double virtualSourceDistance(double la, double lb, double lc, double da, double db) {
-  if (lc <= 0.0) return kUnreached;
-  const double inv2c = 0.5 / lc;
-  // Frame: A = (0, 0), B = (lc, 0), X = (xx, xy) with xy > 0, S = (sx, sy) with sy <= 0.
-  const double xx = (la * la + lc * lc - lb * lb) * inv2c;
-  const double xy2 = la * la - xx * xx;
-  if (!(xy2 > 0.0)) return kUnreached;  // degenerate triangle: edges only
-  const double sx = (da * da - db * db + lc * lc) * inv2c;
-  const double sy2 = da * da - sx * sx;
-  if (sy2 < 0.0) return kUnreached;  // |da - db| > lc: no point at those distances
-  const double xy = std::sqrt(xy2), sy = -std::sqrt(sy2);
-  // Upwind: the segment S -> X crosses the line y = 0 inside [0, lc].
-  const double t = sx + (xx - sx) * (-sy) / (xy - sy);
-  if (t < 0.0 || t > lc) return kUnreached;
-  return std::hypot(xx - sx, xy - sy);
-}
-
 }  // namespace
+
+Vec3 SurfacePoint::position(const TriMesh& mesh) const {
+  if (vertex >= 0) return mesh.positions[vertex];
+  const Tri& t = mesh.triangles[face];
+  return bary[0] * mesh.positions[t[0]] + bary[1] * mesh.positions[t[1]] + bary[2] * mesh.positions[t[2]];
+}
 
 FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric)
     : mesh_(mesh), splits_(findAcuteSplits(mesh)) {
@@ -47,7 +35,7 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric)
                       mesh.positions[mesh.vertex(TriMesh::prev(c))]).norm();
   U_.assign(nv, kUnreached);
   label_.assign(nv, -1);
-  frozen_.assign(nv, 0);
+  acceptedRun_.assign(nv, 0);
   touched_.reserve(nv);
   accepted_.reserve(nv);
   heap_.reserve(nv);
@@ -57,24 +45,54 @@ void FastMarcher::reset() {
   for (int v : touched_) {
     U_[v] = kUnreached;
     label_[v] = -1;
-    frozen_[v] = 0;
+    acceptedRun_[v] = 0;
   }
   touched_.clear();
   accepted_.clear();
+  saved_.clear();
   heap_.clear();
+  runOpen_ = false;
+}
+
+void FastMarcher::beginRun() {
+  if (runOpen_) return;
+  runOpen_ = true;
+  ++run_;
+  accepted_.clear();
+  saved_.clear();
 }
 
 Status FastMarcher::addSource(int v, int label) {
   if (v < 0 || v >= mesh_.vertexCount())
     return invalidInput("source vertex " + std::to_string(v) + " does not exist (the mesh has " +
                         std::to_string(mesh_.vertexCount()) + " vertices)");
-  if (U_[v] == 0.0) return Status::ok();
-  push(v, 0.0, label);
+  beginRun();
+  if (U_[v] > 0.0) push(v, 0.0, label);
+  return Status::ok();
+}
+
+Status FastMarcher::addSource(const SurfacePoint& point, int label) {
+  if (point.vertex >= 0) return addSource(point.vertex, label);
+  if (point.face < 0 || point.face >= mesh_.faceCount())
+    return invalidInput("source face " + std::to_string(point.face) + " does not exist");
+  const Vec3& b = point.bary;
+  if (!b.allFinite() || b.minCoeff() < -1e-9 || std::abs(b.sum() - 1.0) > 1e-6)
+    return invalidInput("barycentric coordinates of a source must be >= 0 and sum to 1");
+  beginRun();
+  const Vec3 p = point.position(mesh_);
+  const Tri& t = mesh_.triangles[point.face];
+  const double pAtPoint = b[0] * P_[t[0]] + b[1] * P_[t[1]] + b[2] * P_[t[2]];
+  for (int v : t) relax(v, 0.5 * (pAtPoint + P_[v]) * (mesh_.positions[v] - p).norm(), label);
   return Status::ok();
 }
 
 void FastMarcher::push(int v, double u, int label) {
-  if (U_[v] == kUnreached) touched_.push_back(v);
+  if (U_[v] == kUnreached) {
+    touched_.push_back(v);
+  } else if (acceptedRun_[v] != 0) {  // a value of an earlier run, improved: keep it to restore
+    saved_.push_back({v, label_[v], acceptedRun_[v], U_[v]});
+    acceptedRun_[v] = 0;
+  }
   U_[v] = u;
   label_[v] = label;
   heap_.push_back({u, v});
@@ -93,68 +111,95 @@ void FastMarcher::relax(int x, int s, int t, double lxs, double lxt, double lst)
   if (u < U_[x] && u >= std::max(us, ut)) push(x, u, us <= ut ? label_[s] : label_[t]);
 }
 
+void FastMarcher::scatter(int v) {
+  const double uv = U_[v];
+  const int lv = label_[v];
+  // Triangles around v: each updates its two other vertices.
+  for (const int* it = mesh_.cornersBegin(v); it != mesh_.cornersEnd(v); ++it) {
+    const int c = *it;
+    const int cn = TriMesh::next(c), cp = TriMesh::prev(c);
+    const int a = mesh_.vertex(cn), b = mesh_.vertex(cp);
+    // |v a| is the edge opposite cp, |v b| opposite cn, |a b| opposite c.
+    const double lva = edgeLength_[cp], lvb = edgeLength_[cn], lab = edgeLength_[c];
+    for (int k = 0; k < 2; ++k) {
+      const int x = k == 0 ? a : b, y = k == 0 ? b : a;
+      if (acceptedRun_[x] == run_) continue;  // final in this run
+      const int cx = k == 0 ? cn : cp;        // corner at x in this face
+      const double lxv = k == 0 ? lva : lvb, lvy = k == 0 ? lvb : lva;
+      relax(x, uv + 0.5 * (P_[v] + P_[x]) * lxv, lv);
+      if (known(y)) relax(x, v, y, lxv, lab, lvy);
+      const int split = splits_.splitOfCorner[cx];
+      if (split >= 0) {  // obtuse at x: the virtual triangle x, v, R
+        const AcuteSplit& sp = splits_.splits[split];
+        if (known(sp.vertex))
+          relax(x, v, sp.vertex, lxv, sp.lenXR, mesh_.vertex(TriMesh::next(cx)) == v ? sp.lenAR : sp.lenBR);
+      }
+    }
+  }
+  // v as the far vertex R of acute splits: the virtual triangles X, A, R and X, B, R.
+  for (int i = splits_.byVertexBegin[v]; i < splits_.byVertexBegin[v + 1]; ++i) {
+    const AcuteSplit& sp = splits_.splits[splits_.byVertex[i]];
+    const int x = mesh_.vertex(sp.corner);
+    if (acceptedRun_[x] == run_) continue;
+    const int a = mesh_.vertex(TriMesh::next(sp.corner)), b = mesh_.vertex(TriMesh::prev(sp.corner));
+    if (known(a)) relax(x, a, v, edgeLength_[TriMesh::prev(sp.corner)], sp.lenXR, sp.lenAR);
+    if (known(b)) relax(x, b, v, edgeLength_[TriMesh::next(sp.corner)], sp.lenXR, sp.lenBR);
+  }
+}
+
 Status FastMarcher::propagate(const FastMarchingParams& params, Progress progress) {
+  beginRun();
   const int nv = mesh_.vertexCount();
+  const bool withTargets = !params.targets.empty();
+  std::vector<int> targets;
+  if (withTargets) {
+    targets = params.targets;
+    std::sort(targets.begin(), targets.end());
+    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+  }
+  size_t targetsReached = 0;
   int sinceReport = 0;
   while (!heap_.empty()) {
-    std::pop_heap(heap_.begin(), heap_.end(), Later{});
-    const HeapEntry top = heap_.back();
-    heap_.pop_back();
+    const HeapEntry top = heap_.front();
     const int v = top.v;
-    if (frozen_[v] || top.u != U_[v]) continue;  // stale entry
-    if (top.u > params.maxDistance) {
-      heap_.clear();
-      break;
-    }
-    frozen_[v] = 1;
+    const bool stale = acceptedRun_[v] == run_ || top.u != U_[v];
+    if (!stale && top.u > params.maxDistance) break;  // left in the heap: endRun() clears it
+    std::pop_heap(heap_.begin(), heap_.end(), Later{});
+    heap_.pop_back();
+    if (stale) continue;
+    acceptedRun_[v] = run_;
     accepted_.push_back(v);
     if (++sinceReport == 4096) {
       sinceReport = 0;
-      if (!progress.report(double(accepted_.size()) / nv, "Fast marching")) return cancelled();
-    }
-
-    const double uv = U_[v];
-    const int lv = label_[v];
-    // Triangles around v: each updates its two other vertices.
-    for (const int* it = mesh_.cornersBegin(v); it != mesh_.cornersEnd(v); ++it) {
-      const int c = *it;
-      const int cn = TriMesh::next(c), cp = TriMesh::prev(c);
-      const int a = mesh_.vertex(cn), b = mesh_.vertex(cp);
-      // |v a| is the edge opposite cp, |v b| opposite cn, |a b| opposite c.
-      const double lva = edgeLength_[cp], lvb = edgeLength_[cn], lab = edgeLength_[c];
-      for (int k = 0; k < 2; ++k) {
-        const int x = k == 0 ? a : b, y = k == 0 ? b : a;
-        if (frozen_[x]) continue;
-        const int cx = k == 0 ? cn : cp;           // corner at x in this face
-        const double lxv = k == 0 ? lva : lvb, lvy = k == 0 ? lvb : lva;
-        relax(x, uv + 0.5 * (P_[v] + P_[x]) * lxv, lv);
-        if (frozen_[y]) relax(x, v, y, lxv, lab, lvy);
-        const int split = splits_.splitOfCorner[cx];
-        if (split >= 0) {  // obtuse at x: the virtual triangle x, v, R
-          const AcuteSplit& sp = splits_.splits[split];
-          if (frozen_[sp.vertex])
-            relax(x, v, sp.vertex, lxv, sp.lenXR, mesh_.vertex(TriMesh::next(cx)) == v ? sp.lenAR : sp.lenBR);
-        }
+      if (!progress.report(double(accepted_.size()) / nv, "Fast marching")) {
+        endRun();
+        return cancelled();
       }
     }
-    // v as the far vertex R of acute splits: the virtual triangles X, A, R and X, B, R.
-    for (int i = splits_.byVertexBegin[v]; i < splits_.byVertexBegin[v + 1]; ++i) {
-      const AcuteSplit& sp = splits_.splits[splits_.byVertex[i]];
-      const int x = mesh_.vertex(sp.corner);
-      if (frozen_[x]) continue;
-      const int a = mesh_.vertex(TriMesh::next(sp.corner)), b = mesh_.vertex(TriMesh::prev(sp.corner));
-      if (frozen_[a]) relax(x, a, v, edgeLength_[TriMesh::prev(sp.corner)], sp.lenXR, sp.lenAR);
-      if (frozen_[b]) relax(x, b, v, edgeLength_[TriMesh::next(sp.corner)], sp.lenXR, sp.lenBR);
-    }
+    scatter(v);
+    if (withTargets && std::binary_search(targets.begin(), targets.end(), v) && ++targetsReached == targets.size())
+      break;
   }
-  // Tentative values beyond the limit are not distances: clear them.
-  for (int v : touched_)
-    if (!frozen_[v]) {
-      U_[v] = kUnreached;
-      label_[v] = -1;
+  endRun();
+  return Status::ok();
+}
+
+void FastMarcher::endRun() {
+  // Values still tentative are not distances: restore what earlier runs had, clear the rest.
+  for (const Saved& s : saved_)
+    if (acceptedRun_[s.v] != run_) {
+      U_[s.v] = s.u;
+      label_[s.v] = s.label;
+      acceptedRun_[s.v] = s.run;
+    }
+  for (const HeapEntry& e : heap_)
+    if (acceptedRun_[e.v] == 0) {
+      U_[e.v] = kUnreached;
+      label_[e.v] = -1;
     }
   heap_.clear();
-  return Status::ok();
+  saved_.clear();
+  runOpen_ = false;
 }
 
 Expected<FastMarchingResult> fastMarching(const TriMesh& mesh, const Metric& metric,
@@ -166,6 +211,8 @@ Expected<FastMarchingResult> fastMarching(const TriMesh& mesh, const Metric& met
                         std::to_string(mesh.vertexCount()) + " vertices");
   if (std::isnan(params.maxDistance) || params.maxDistance < 0.0)
     return invalidInput("the distance limit must be >= 0, got " + std::to_string(params.maxDistance));
+  for (int t : params.targets)
+    if (t < 0 || t >= mesh.vertexCount()) return invalidInput("target vertex " + std::to_string(t) + " does not exist");
   FastMarcher marcher(mesh, metric);
   for (size_t i = 0; i < sources.size(); ++i)
     if (Status s = marcher.addSource(sources[i], static_cast<int>(i)); !s) return s;

@@ -1,20 +1,17 @@
 // Fast marching on a triangle mesh: weighted geodesic distance and nearest source (Voronoi).
 //
-// Paper §2.1–2.2; Kimmel & Sethian 1998. Vertices are accepted in increasing distance U from a
-// binary heap. When a vertex is accepted, each incident triangle (v, a, b) updates a and b:
+// Paper §2.1–2.2, §3.1; Kimmel & Sethian 1998. Vertices are accepted in increasing distance U
+// from a binary heap. When a vertex is accepted, each incident triangle (v, a, b) offers a and b
+// the local Eikonal solution (eikonal_update.h) and edge updates. At an obtuse corner X the
+// update also comes from the virtual triangles XAR, XRB, where R is found by unfolding across AB
+// (acute_split.h). A triangle update smaller than max(U(A), U(B)) is rejected, so the accepted
+// values never decrease along the acceptance order (monotone) on any mesh.
 //
-//            S   virtual source, unfolded across AB so that |SA| = U(A)/P, |SB| = U(B)/P
-//            |
-//      A ----+-------- B       U(X) = P * |SX| if the segment SX crosses AB (upwind),
-//        \     |     /         else U(X) = min(U(A) + P|XA|, U(B) + P|XB|) (edge updates).
-//          \   |   /
-//              X
-//
-// At an obtuse corner X the update also comes from virtual triangles XAR, XRB, where R is found
-// by unfolding across AB (acute_split.h). A triangle update smaller than max(U(A), U(B)) is
-// rejected, so the accepted values never decrease along the acceptance order (monotone).
-// Cost: O(n log n) for n reached vertices; memory: O(V) buffers owned by the FastMarcher and
-// reused across runs (no allocation per vertex in the loop).
+// Incremental use (greedy sampling, Lloyd): after a run, add a source and propagate again: the
+// new front only enters vertices it improves, U_{n+1} = min(U_n, U_x) (§3.1), and
+// acceptedOrder() lists exactly the vertices whose U decreased.
+// Cost: O(n log n) for n vertices accepted in a run. Memory: O(V + F) buffers owned by the
+// FastMarcher and reused across runs; no allocation per vertex in the loop.
 #pragma once
 
 #include <limits>
@@ -30,10 +27,23 @@ namespace gr {
 
 constexpr double kUnreached = std::numeric_limits<double>::infinity();
 
+/// A point on the surface: a vertex, or a point of a face in barycentric coordinates.
+struct SurfacePoint {
+  int vertex = -1;           ///< >= 0: the point is this vertex
+  int face = -1;             ///< >= 0 (with vertex == -1): a point of this face
+  Vec3 bary = Vec3::Zero();  ///< barycentric coordinates in `face`, >= 0, summing to 1
+
+  static SurfacePoint atVertex(int v) { return {v, -1, Vec3::Zero()}; }
+  static SurfacePoint inFace(int f, const Vec3& b) { return {-1, f, b}; }
+  Vec3 position(const TriMesh& mesh) const;
+};
+
 struct FastMarchingParams {
-  /// Stop the front at this distance (mesh units, weighted by P); vertices farther away are left
-  /// unreached. +inf (default) = no limit.
+  /// Stop the front at this distance (mesh units, weighted by P); vertices farther away keep
+  /// their previous value (+inf in a first run). +inf (default) = no limit.
   double maxDistance = kUnreached;
+  /// Stop as soon as all these vertices are accepted; empty (default) = no such stop.
+  std::vector<int> targets;
 };
 
 struct FastMarchingResult {
@@ -45,52 +55,68 @@ struct FastMarchingResult {
 };
 
 /// Reusable fast-marching engine: owns the heap and per-vertex buffers for one mesh and metric.
-/// reset() costs O(vertices touched by the last run).
 class FastMarcher {
  public:
-  /// `mesh` and `metric` must outlive the marcher. The metric must be uniform or have one P
-  /// per vertex (checked by Metric's factories).
+  /// `mesh` and `metric` must outlive the marcher; the metric is uniform or has one P per
+  /// vertex (checked by Metric's factories). Precomputes edge lengths and acute splits.
   FastMarcher(const TriMesh& mesh, const Metric& metric);
 
-  /// Forgets all sources and distances.
+  /// Forgets all sources and distances. Cost: O(vertices ever reached since the last reset).
   void reset();
-  /// Adds vertex `v` as a source with distance 0 and the given label. InvalidInput if v is out
-  /// of range. A vertex given twice keeps its first label.
+  /// Adds vertex `v` as a source (U = 0) with a label. InvalidInput if v is out of range. A
+  /// vertex that already has U = 0 keeps its label.
   Status addSource(int v, int label);
-  /// Runs the front until the heap is empty or the next distance exceeds params.maxDistance.
-  /// Cancelled if `progress` says so (the state is then partial).
+  /// Adds a surface point as a source: the vertices of its face get their straight distance.
+  Status addSource(const SurfacePoint& point, int label);
+  /// Runs the front from the sources added since the last run, entering only vertices it
+  /// improves. Cancelled if `progress` says so (the field is then partial).
   Status propagate(const FastMarchingParams& params = {}, Progress progress = {});
 
   const std::vector<double>& distance() const { return U_; }
   const std::vector<int>& label() const { return label_; }
+  /// Vertices accepted by the last propagate(), in order: all reached vertices for a first
+  /// run, the improved ones for an incremental run.
   const std::vector<int>& acceptedOrder() const { return accepted_; }
+  const TriMesh& mesh() const { return mesh_; }
+  const AcuteSplits& acuteSplits() const { return splits_; }
 
  private:
   struct HeapEntry {
     double u;
     int v;
   };
+  struct Saved {  // value of a vertex before the current run improved it tentatively
+    int v, label, run;
+    double u;
+  };
+  void beginRun();
   void push(int v, double u, int label);
+  bool known(int v) const { return acceptedRun_[v] != 0; }
   /// Offers x the value u (edge update) with the given label.
   void relax(int x, double u, int label);
-  /// Offers x the update of the (possibly virtual) triangle x, s, t; s and t are frozen.
+  /// Offers x the update of the (possibly virtual) triangle x, s, t; s and t are known.
   void relax(int x, int s, int t, double lxs, double lxt, double lst);
+  void scatter(int v);
+  void endRun();
 
   const TriMesh& mesh_;
-  AcuteSplits splits_;             ///< obtuse corners and their unfolded acute splits
-  std::vector<double> P_;          ///< per vertex; all ones for a uniform metric
-  std::vector<double> edgeLength_; ///< per corner: length of the opposite edge
+  AcuteSplits splits_;
+  std::vector<double> P_;           ///< per vertex; all ones for a uniform metric
+  std::vector<double> edgeLength_;  ///< per corner: length of the opposite edge
   std::vector<double> U_;
   std::vector<int> label_;
-  std::vector<char> frozen_;
-  std::vector<int> touched_;       ///< vertices with a finite tentative value since reset()
+  std::vector<int> acceptedRun_;    ///< run in which the vertex was last accepted; 0 = not known
+  int run_ = 0;
+  bool runOpen_ = false;
+  std::vector<int> touched_;        ///< vertices given a finite value since reset()
   std::vector<int> accepted_;
+  std::vector<Saved> saved_;
   std::vector<HeapEntry> heap_;
 };
 
-/// One-shot multi-source fast marching. Fails on an empty or out-of-range source list, or a
-/// metric whose size does not match the mesh. On a connected mesh with no distance limit every
-/// vertex is reached.
+/// One-shot multi-source fast marching. Fails on an empty or out-of-range source list, a metric
+/// whose size does not match the mesh, or a negative distance limit. On a connected mesh with no
+/// limit every vertex is reached.
 Expected<FastMarchingResult> fastMarching(const TriMesh& mesh, const Metric& metric,
                                           const std::vector<int>& sources,
                                           const FastMarchingParams& params = {}, Progress progress = {});

@@ -1,0 +1,78 @@
+#include "tests/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "core/vcg_mesh.h"
+
+namespace gr::test {
+
+std::string meshPath(const std::string& name) { return std::string(GR_MESH_DIR) + "/" + name; }
+
+TriMesh loadRealMesh(const std::string& name) {
+  Expected<TriMesh> m = loadTriMesh(meshPath(name));
+  if (!m) {
+    ADD_FAILURE() << "cannot load " << name << ": " << m.status().message
+                  << " (run scripts/setup.sh to fetch the test meshes)";
+    return {};
+  }
+  return std::move(m).value();
+}
+
+TriMesh planeGrid(int n, double size, double jitter, unsigned seed) {
+  std::vector<Vec3> pos;
+  std::vector<Tri> tris;
+  const double h = size / n;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      Vec3 p(i * h, j * h, 0.0);
+      if (jitter > 0 && i > 0 && j > 0 && i < n && j < n) p += Vec3(u(rng), u(rng), 0.0) * jitter * h;
+      pos.push_back(p);
+    }
+  auto id = [n](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      tris.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      tris.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return std::move(buildTriMesh(std::move(pos), std::move(tris))).value();
+}
+
+TriMesh icosphere(int level, double r) {
+  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+  std::vector<Vec3> pos = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                           {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<Tri> tris = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                           {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                           {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                           {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  for (Vec3& p : pos) p.normalize();
+  for (int l = 0; l < level; ++l) {
+    std::map<std::pair<int, int>, int> mid;
+    auto midpoint = [&](int a, int b) {
+      auto key = std::minmax(a, b);
+      auto it = mid.find(key);
+      if (it != mid.end()) return it->second;
+      pos.push_back((pos[a] + pos[b]).normalized());
+      return mid[key] = static_cast<int>(pos.size()) - 1;
+    };
+    std::vector<Tri> next;
+    for (const Tri& f : tris) {
+      const int a = midpoint(f[0], f[1]), b = midpoint(f[1], f[2]), c = midpoint(f[2], f[0]);
+      next.push_back({f[0], a, c});
+      next.push_back({f[1], b, a});
+      next.push_back({f[2], c, b});
+      next.push_back({a, b, c});
+    }
+    tris.swap(next);
+  }
+  for (Vec3& p : pos) p *= r;
+  return std::move(buildTriMesh(std::move(pos), std::move(tris))).value();
+}
+
+}  // namespace gr::test

@@ -1,0 +1,21 @@
+// Shared test helpers: mesh fixtures built in code, and the path of a real test mesh.
+#pragma once
+
+#include <string>
+
+#include "core/tri_mesh.h"
+
+namespace gr::test {
+
+/// Path of a mesh of the libcgal-demo set fetched by scripts/setup.sh ("fandisk.off").
+std::string meshPath(const std::string& name);
+/// Loads a real test mesh; fails the current test (ADD_FAILURE) and returns an empty mesh if absent.
+TriMesh loadRealMesh(const std::string& name);
+
+/// Regular n x n grid of squares on [0, size]^2 (z = 0), each square split into two triangles.
+/// jitter in [0, 0.5): interior vertices moved by up to jitter * spacing, deterministically (seed).
+TriMesh planeGrid(int n, double size = 1.0, double jitter = 0.0, unsigned seed = 1);
+/// Icosphere of radius r, subdivided `level` times (level 0 = icosahedron).
+TriMesh icosphere(int level, double r = 1.0);
+
+}  // namespace gr::test

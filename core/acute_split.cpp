@@ -1,27 +1,11 @@
 #include "core/acute_split.h"
 
-#include <Eigen/Core>
-
 #include <cmath>
+
+#include "core/unfold.h"
 
 namespace gr {
 namespace {
-
-using Vec2 = Eigen::Vector2d;
-
-double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
-
-/// Position of R in the plane, given the edge (p, q), |PR|, |QR|, on the side of pq opposite to t.
-Vec2 unfold(const Vec2& p, const Vec2& q, const Vec2& t, double lenPR, double lenQR) {
-  const Vec2 e = q - p;
-  const double len = e.norm();
-  const Vec2 dir = e / len;
-  const double along = (lenPR * lenPR - lenQR * lenQR + len * len) / (2.0 * len);
-  const double h = std::sqrt(std::max(0.0, lenPR * lenPR - along * along));
-  Vec2 normal(-dir.y(), dir.x());
-  if (cross(e, t - p) * cross(e, normal) > 0.0) normal = -normal;  // away from t
-  return p + dir * along + normal * h;
-}
 
 /// The corner of the face of `corner` whose vertex is v.
 int cornerAt(const TriMesh& m, int corner, int v) {

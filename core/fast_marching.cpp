@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/eikonal_update.h"
+#include "core/unfold.h"
 
 namespace gr {
 namespace {
@@ -16,6 +17,9 @@ struct Later {
     return x.u > y.u;
   }
 };
+
+/// Rings of faces around a source initialised by unfolding (see seedByUnfolding).
+constexpr int kSeedDepth = 3;
 
 }  // namespace
 
@@ -67,8 +71,59 @@ Status FastMarcher::addSource(int v, int label) {
     return invalidInput("source vertex " + std::to_string(v) + " does not exist (the mesh has " +
                         std::to_string(mesh_.vertexCount()) + " vertices)");
   beginRun();
-  if (U_[v] > 0.0) push(v, 0.0, label);
+  if (U_[v] <= 0.0) return Status::ok();
+  push(v, 0.0, label);
+  // Each incident face in its own plane, v at the origin.
+  for (const int* it = mesh_.cornersBegin(v); it != mesh_.cornersEnd(v); ++it) {
+    const int c = *it;
+    std::array<Vec2, 3> layout;
+    const double la = edgeLength_[TriMesh::prev(c)], lb = edgeLength_[TriMesh::next(c)], lc = edgeLength_[c];
+    layout[c % 3] = Vec2(0.0, 0.0);
+    layout[TriMesh::next(c) % 3] = Vec2(la, 0.0);
+    const double x = la > 0.0 ? (la * la + lb * lb - lc * lc) / (2.0 * la) : 0.0;
+    layout[TriMesh::prev(c) % 3] = Vec2(x, std::sqrt(std::max(0.0, lb * lb - x * x)));
+    seedByUnfolding(Vec2(0.0, 0.0), P_[v], TriMesh::face(c), layout, -1, kSeedDepth, label);
+  }
   return Status::ok();
+}
+
+void FastMarcher::seedByUnfolding(const Vec2& p, double pAtSource, int face, const std::array<Vec2, 3>& layout,
+                                  int enteredThrough, int depth, int label) {
+  // A straight segment from p that crosses every edge of the chain is a path on the surface.
+  for (int k = 0; k < 3; ++k) {
+    bool inside = true;
+    for (size_t e = 0; e < seedChain_.size() && inside; ++e)
+      inside = segmentsIntersect(p, layout[k], seedChain_[e].first, seedChain_[e].second);
+    if (inside) {
+      const int w = mesh_.triangles[face][k];
+      relax(w, 0.5 * (pAtSource + P_[w]) * (layout[k] - p).norm(), label);
+    }
+  }
+  if (depth == 0) return;
+  for (int k = 0; k < 3; ++k) {
+    const int c = 3 * face + k;
+    if (c == enteredThrough) continue;
+    const int o = mesh_.oppositeCorner[c];
+    if (o < 0) continue;
+    const int cn = TriMesh::next(c), cp = TriMesh::prev(c);
+    const Vec2 &q1 = layout[cn % 3], &q2 = layout[cp % 3];
+    if ((q2 - q1).squaredNorm() <= 0.0) continue;
+    // In the next face, the vertices of the shared edge keep their positions.
+    const int g = TriMesh::face(o);
+    std::array<Vec2, 3> next;
+    const int r = mesh_.vertex(o);
+    const Vec3& pr = mesh_.positions[r];
+    next[o % 3] = unfold(q1, q2, layout[k], (pr - mesh_.positions[mesh_.vertex(cn)]).norm(),
+                         (pr - mesh_.positions[mesh_.vertex(cp)]).norm());
+    for (int j = 0; j < 3; ++j) {
+      const int corner = 3 * g + j;
+      if (corner == o) continue;
+      next[j] = mesh_.vertex(corner) == mesh_.vertex(cn) ? q1 : q2;
+    }
+    seedChain_.push_back({q1, q2});
+    seedByUnfolding(p, pAtSource, g, next, o, depth - 1, label);
+    seedChain_.pop_back();
+  }
 }
 
 Status FastMarcher::addSource(const SurfacePoint& point, int label) {
@@ -79,10 +134,16 @@ Status FastMarcher::addSource(const SurfacePoint& point, int label) {
   if (!b.allFinite() || b.minCoeff() < -1e-9 || std::abs(b.sum() - 1.0) > 1e-6)
     return invalidInput("barycentric coordinates of a source must be >= 0 and sum to 1");
   beginRun();
-  const Vec3 p = point.position(mesh_);
-  const Tri& t = mesh_.triangles[point.face];
+  const int f = point.face;
+  const Tri& t = mesh_.triangles[f];
   const double pAtPoint = b[0] * P_[t[0]] + b[1] * P_[t[1]] + b[2] * P_[t[2]];
-  for (int v : t) relax(v, 0.5 * (pAtPoint + P_[v]) * (mesh_.positions[v] - p).norm(), label);
+  // The face in its plane: t[0] at the origin, t[1] on the x axis.
+  const double l01 = edgeLength_[3 * f + 2], l02 = edgeLength_[3 * f + 1], l12 = edgeLength_[3 * f];
+  const double x = l01 > 0.0 ? (l01 * l01 + l02 * l02 - l12 * l12) / (2.0 * l01) : 0.0;
+  const std::array<Vec2, 3> layout = {Vec2(0.0, 0.0), Vec2(l01, 0.0),
+                                      Vec2(x, std::sqrt(std::max(0.0, l02 * l02 - x * x)))};
+  const Vec2 p = b[0] * layout[0] + b[1] * layout[1] + b[2] * layout[2];
+  seedByUnfolding(p, pAtPoint, f, layout, -1, kSeedDepth, label);
   return Status::ok();
 }
 

@@ -14,7 +14,9 @@
 // FastMarcher and reused across runs; no allocation per vertex in the loop.
 #pragma once
 
+#include <array>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "core/acute_split.h"
@@ -22,6 +24,7 @@
 #include "core/progress.h"
 #include "core/status.h"
 #include "core/tri_mesh.h"
+#include "core/unfold.h"
 
 namespace gr {
 
@@ -97,6 +100,11 @@ class FastMarcher {
   /// Offers x the update of the (possibly virtual) triangle x, s, t; s and t are known.
   void relax(int x, int s, int t, double lxs, double lxt, double lst);
   void scatter(int v);
+  /// Offers the vertices of the faces around a source the length of straight segments from the
+  /// source point in the unfolding of those faces (kSeedDepth rings): exact values where a point
+  /// source is too close for the triangle updates to be causal.
+  void seedByUnfolding(const Vec2& p, double pAtSource, int face, const std::array<Vec2, 3>& layout,
+                       int enteredThrough, int depth, int label);
   void endRun();
 
   const TriMesh& mesh_;
@@ -112,6 +120,7 @@ class FastMarcher {
   std::vector<int> accepted_;
   std::vector<Saved> saved_;
   std::vector<HeapEntry> heap_;
+  std::vector<std::pair<Vec2, Vec2>> seedChain_;  ///< edges crossed by the current unfolding
 };
 
 /// One-shot multi-source fast marching. Fails on an empty or out-of-range source list, a metric

@@ -76,3 +76,48 @@ TriMesh icosphere(int level, double r) {
 }
 
 }  // namespace gr::test
+
+namespace gr::test {
+
+TriMesh cylinder(int nTheta, int nZ, double r, double h) {
+  std::vector<Vec3> pos;
+  std::vector<Tri> tris;
+  for (int j = 0; j <= nZ; ++j)
+    for (int i = 0; i < nTheta; ++i) {
+      const double t = 2.0 * M_PI * i / nTheta;
+      pos.emplace_back(r * std::cos(t), r * std::sin(t), h * j / nZ);
+    }
+  auto id = [nTheta](int i, int j) { return j * nTheta + (i % nTheta); };
+  for (int j = 0; j < nZ; ++j)
+    for (int i = 0; i < nTheta; ++i) {
+      tris.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      tris.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return std::move(buildTriMesh(std::move(pos), std::move(tris))).value();
+}
+
+TriMesh uvSphere(int nLat, int nLon, double r) {
+  std::vector<Vec3> pos;
+  std::vector<Tri> tris;
+  pos.emplace_back(0, 0, r);  // north pole: 0
+  for (int j = 1; j < nLat; ++j)
+    for (int i = 0; i < nLon; ++i) {
+      const double th = M_PI * j / nLat, ph = 2.0 * M_PI * i / nLon;
+      pos.emplace_back(r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph), r * std::cos(th));
+    }
+  pos.emplace_back(0, 0, -r);  // south pole
+  const int south = static_cast<int>(pos.size()) - 1;
+  auto id = [nLon](int i, int j) { return 1 + (j - 1) * nLon + (i % nLon); };
+  for (int i = 0; i < nLon; ++i) {
+    tris.push_back({0, id(i, 1), id(i + 1, 1)});
+    tris.push_back({south, id(i + 1, nLat - 1), id(i, nLat - 1)});
+  }
+  for (int j = 1; j < nLat - 1; ++j)
+    for (int i = 0; i < nLon; ++i) {
+      tris.push_back({id(i, j), id(i, j + 1), id(i + 1, j + 1)});
+      tris.push_back({id(i, j), id(i + 1, j + 1), id(i + 1, j)});
+    }
+  return std::move(buildTriMesh(std::move(pos), std::move(tris))).value();
+}
+
+}  // namespace gr::test

@@ -19,3 +19,12 @@ TriMesh planeGrid(int n, double size = 1.0, double jitter = 0.0, unsigned seed =
 TriMesh icosphere(int level, double r = 1.0);
 
 }  // namespace gr::test
+
+namespace gr::test {
+
+/// Open cylinder of radius r and height h around the z axis: nTheta x nZ quads, split in two.
+TriMesh cylinder(int nTheta, int nZ, double r = 1.0, double h = 2.0);
+/// UV (latitude-longitude) sphere of radius r with poles: thin triangles near the poles.
+TriMesh uvSphere(int nLat, int nLon, double r = 1.0);
+
+}  // namespace gr::test

@@ -30,6 +30,26 @@ double extendedArrival(const TriMesh& m, const std::vector<double>& P, const std
   return best;
 }
 
+/// Front `region`'s arrival at x extrapolated from its neighbour w along the front's direction:
+/// U(w) + P * g.(x - w), with g the mean unit gradient of U over the faces around w that lie
+/// entirely in the region. +inf if there is no such face.
+double extrapolatedArrival(const TriMesh& m, const std::vector<double>& P, const std::vector<double>& U,
+                           const std::vector<int>& label, int w, int x, int region) {
+  Vec3 direction = Vec3::Zero();
+  for (const int* it = m.cornersBegin(w); it != m.cornersEnd(w); ++it) {
+    const Tri& t = m.triangles[TriMesh::face(*it)];
+    if (label[t[0]] != region || label[t[1]] != region || label[t[2]] != region) continue;
+    const Vec3 e1 = m.positions[t[1]] - m.positions[t[0]], e2 = m.positions[t[2]] - m.positions[t[0]];
+    const double a11 = e1.dot(e1), a12 = e1.dot(e2), a22 = e2.dot(e2), det = a11 * a22 - a12 * a12;
+    if (!(det > 1e-14 * a11 * a22)) continue;
+    const double r1 = U[t[1]] - U[t[0]], r2 = U[t[2]] - U[t[0]];
+    const Vec3 g = ((r1 * a22 - r2 * a12) / det) * e1 + ((r2 * a11 - r1 * a12) / det) * e2;
+    if (g.norm() > 0.0) direction += g.normalized();
+  }
+  if (direction.norm() == 0.0) return std::numeric_limits<double>::infinity();
+  return U[w] + 0.5 * (P[w] + P[x]) * direction.normalized().dot(m.positions[x] - m.positions[w]);
+}
+
 }  // namespace
 
 std::vector<VoronoiEdgePoint> voronoiBoundaryPoints(const TriMesh& mesh, const Metric& metric,
@@ -44,8 +64,12 @@ std::vector<VoronoiEdgePoint> voronoiBoundaryPoints(const TriMesh& mesh, const M
     const int a = label[v1], b = label[v2];
     if (a < 0 || b < 0 || a == b) continue;
     const double d1a = distance[v1], d2b = distance[v2];
-    const double d1b = extendedArrival(mesh, P, distance, label, v1, b);
-    const double d2a = extendedArrival(mesh, P, distance, label, v2, a);
+    // Each front continued one vertex past its region: from the neighbour across the edge when
+    // its faces show the front's direction, else from the region's triangles and edges at the vertex.
+    double d1b = extrapolatedArrival(mesh, P, distance, label, v2, v1, b);
+    double d2a = extrapolatedArrival(mesh, P, distance, label, v1, v2, a);
+    if (!std::isfinite(d1b)) d1b = extendedArrival(mesh, P, distance, label, v1, b);
+    if (!std::isfinite(d2a)) d2a = extendedArrival(mesh, P, distance, label, v2, a);
     const double num = d1b - d1a, den = (d1b - d1a) + (d2a - d2b);
     double lambda = 0.5;
     if (std::isfinite(num) && std::isfinite(den) && den > 0.0) lambda = std::clamp(num / den, 0.0, 1.0);

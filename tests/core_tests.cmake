@@ -2,3 +2,5 @@
 gr_add_core_test(test_tri_mesh test_tri_mesh.cpp)
 gr_add_core_test(test_fast_marching test_fast_marching.cpp)
 gr_add_core_test(test_fast_marching_incremental test_fast_marching_incremental.cpp)
+gr_add_core_test(test_fast_marching_shapes test_fast_marching_shapes.cpp)
+gr_add_core_test(test_voronoi_boundary test_voronoi_boundary.cpp)

@@ -165,14 +165,13 @@ void FastMarcher::relax(int x, double u, int label) {
 }
 
 void FastMarcher::relax(int x, int s, int t, double lxs, double lxt, double lst) {
-  // Two fronts of different sources do not make one virtual source: near Voronoi boundaries
-  // each front reaches x through its own triangles and edges, and the smaller arrival wins.
-  if (label_[s] != label_[t]) return;
   const double p = (P_[x] + P_[s] + P_[t]) * (1.0 / 3.0);
   const double us = U_[s], ut = U_[t];
   const double u = p * virtualSourceDistance(lxs, lxt, lst, us / p, ut / p);
   // Causality: a value below a neighbour's would break the acceptance order (obtuse angles).
-  if (u < U_[x] && u >= std::max(us, ut)) push(x, u, label_[s]);
+  // The label of the nearer vertex. Updates that mix two fronts are kept on purpose: skipping
+  // them would make a multi-source field depend on the order the sources were added.
+  if (u < U_[x] && u >= std::max(us, ut)) push(x, u, us <= ut ? label_[s] : label_[t]);
 }
 
 void FastMarcher::scatter(int v) {

@@ -38,7 +38,7 @@ bool findSplit(const TriMesh& m, int c, int maxUnfoldings, AcuteSplit& out) {
                            (m.positions[r] - m.positions[qVert]).norm());
     const double phi = std::atan2(pr.y(), pr.x());
     if (phi > theta - halfPi && phi < halfPi && phi > 0.0 && phi < theta) {
-      out = {c, r, pr.norm(), (pr - pa).norm(), (pr - pb).norm()};
+      out = {c, r, pr.norm(), (pr - pa).norm(), (pr - pb).norm(), la, lb};
       return true;
     }
     // Continue across the edge of triangle (p, q, r) that the bisector leaves through.

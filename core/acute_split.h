@@ -29,6 +29,8 @@ struct AcuteSplit {
   double lenXR;  ///< unfolded lengths
   double lenAR;  ///< A = vertex(next(corner))
   double lenBR;  ///< B = vertex(prev(corner))
+  double lenXA;  ///< edge lengths of the corner's triangle
+  double lenXB;
 };
 
 struct AcuteSplits {

@@ -10,14 +10,6 @@
 namespace gr {
 namespace {
 
-/// Min-heap order for std::push_heap / std::pop_heap.
-struct Later {
-  template <class E>
-  bool operator()(const E& x, const E& y) const {
-    return x.u > y.u;
-  }
-};
-
 /// Rings of faces around a source initialised by unfolding (see seedByUnfolding).
 constexpr int kSeedDepth = 3;
 
@@ -30,19 +22,34 @@ Vec3 SurfacePoint::position(const TriMesh& mesh) const {
 }
 
 FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric)
-    : mesh_(mesh), splits_(findAcuteSplits(mesh)) {
+    : mesh_(mesh), splits_(findAcuteSplits(mesh)), uniform_(metric.isUniform()) {
   const int nv = mesh.vertexCount();
   P_ = metric.isUniform() ? std::vector<double>(nv, 1.0) : metric.P;
-  edgeLength_.resize(3 * static_cast<size_t>(mesh.faceCount()));
-  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
-    edgeLength_[c] = (mesh.positions[mesh.vertex(TriMesh::next(c))] -
-                      mesh.positions[mesh.vertex(TriMesh::prev(c))]).norm();
+  // The star of each vertex, contiguous, in the order of mesh.vertexCorners.
+  star_.resize(mesh.vertexCorners.size());
+  for (size_t i = 0; i < mesh.vertexCorners.size(); ++i) {
+    const int c = mesh.vertexCorners[i];
+    const int cn = TriMesh::next(c), cp = TriMesh::prev(c);
+    StarFace& f = star_[i];
+    f.a = mesh.vertex(cn);
+    f.b = mesh.vertex(cp);
+    f.splitAtA = splits_.splitOfCorner[cn];
+    f.splitAtB = splits_.splitOfCorner[cp];
+    const double lva = cornerEdgeLength(cp), lvb = cornerEdgeLength(cn), lab = cornerEdgeLength(c);
+    f.lva = lva;
+    f.lvb = lvb;
+    f.lab = lab;
+  }
   U_.assign(nv, kUnreached);
   label_.assign(nv, -1);
   acceptedRun_.assign(nv, 0);
   touched_.reserve(nv);
   accepted_.reserve(nv);
-  heap_.reserve(nv);
+  heap_.resize(nv);
+}
+
+double FastMarcher::cornerEdgeLength(int c) const {
+  return (mesh_.positions[mesh_.vertex(TriMesh::next(c))] - mesh_.positions[mesh_.vertex(TriMesh::prev(c))]).norm();
 }
 
 void FastMarcher::reset() {
@@ -77,7 +84,7 @@ Status FastMarcher::addSource(int v, int label) {
   for (const int* it = mesh_.cornersBegin(v); it != mesh_.cornersEnd(v); ++it) {
     const int c = *it;
     std::array<Vec2, 3> layout;
-    const double la = edgeLength_[TriMesh::prev(c)], lb = edgeLength_[TriMesh::next(c)], lc = edgeLength_[c];
+    const double la = cornerEdgeLength(TriMesh::prev(c)), lb = cornerEdgeLength(TriMesh::next(c)), lc = cornerEdgeLength(c);
     layout[c % 3] = Vec2(0.0, 0.0);
     layout[TriMesh::next(c) % 3] = Vec2(la, 0.0);
     const double x = la > 0.0 ? (la * la + lb * lb - lc * lc) / (2.0 * la) : 0.0;
@@ -138,7 +145,7 @@ Status FastMarcher::addSource(const SurfacePoint& point, int label) {
   const Tri& t = mesh_.triangles[f];
   const double pAtPoint = b[0] * P_[t[0]] + b[1] * P_[t[1]] + b[2] * P_[t[2]];
   // The face in its plane: t[0] at the origin, t[1] on the x axis.
-  const double l01 = edgeLength_[3 * f + 2], l02 = edgeLength_[3 * f + 1], l12 = edgeLength_[3 * f];
+  const double l01 = cornerEdgeLength(3 * f + 2), l02 = cornerEdgeLength(3 * f + 1), l12 = cornerEdgeLength(3 * f);
   const double x = l01 > 0.0 ? (l01 * l01 + l02 * l02 - l12 * l12) / (2.0 * l01) : 0.0;
   const std::array<Vec2, 3> layout = {Vec2(0.0, 0.0), Vec2(l01, 0.0),
                                       Vec2(x, std::sqrt(std::max(0.0, l02 * l02 - x * x)))};
@@ -156,47 +163,60 @@ void FastMarcher::push(int v, double u, int label) {
   }
   U_[v] = u;
   label_[v] = label;
-  heap_.push_back({u, v});
-  std::push_heap(heap_.begin(), heap_.end(), Later{});
+  heap_.pushOrDecrease(v, u);
 }
 
 void FastMarcher::relax(int x, double u, int label) {
   if (u < U_[x]) push(x, u, label);
 }
 
-void FastMarcher::relax(int x, int s, int t, double lxs, double lxt, double lst) {
-  const double p = (P_[x] + P_[s] + P_[t]) * (1.0 / 3.0);
+template <bool kUniform>
+void FastMarcher::offerTriangle(Candidate& best, int x, int s, int t, double lxs, double lxt, double lst) const {
   const double us = U_[s], ut = U_[t];
-  const double u = p * virtualSourceDistance(lxs, lxt, lst, us / p, ut / p);
+  if (std::max(us, ut) >= best.u) return;  // causal values are >= both: it cannot win
+  const TriangleFrame frame = triangleFrame(lxs, lxt, lst);
+  double u;
+  if constexpr (kUniform) {
+    u = virtualSourceDistance(frame, us, ut);
+  } else {
+    const double p = (P_[x] + P_[s] + P_[t]) * (1.0 / 3.0);
+    u = p * virtualSourceDistance(frame, us / p, ut / p);
+  }
   // Causality: a value below a neighbour's would break the acceptance order (obtuse angles).
   // The label of the nearer vertex. Updates that mix two fronts are kept on purpose: skipping
   // them would make a multi-source field depend on the order the sources were added.
-  if (u < U_[x] && u >= std::max(us, ut)) push(x, u, us <= ut ? label_[s] : label_[t]);
+  if (u < best.u && u >= std::max(us, ut)) best = {u, us <= ut ? label_[s] : label_[t]};
 }
 
+template <bool kUniform>
 void FastMarcher::scatter(int v) {
   const double uv = U_[v];
   const int lv = label_[v];
-  // Triangles around v: each updates its two other vertices.
-  for (const int* it = mesh_.cornersBegin(v); it != mesh_.cornersEnd(v); ++it) {
-    const int c = *it;
-    const int cn = TriMesh::next(c), cp = TriMesh::prev(c);
-    const int a = mesh_.vertex(cn), b = mesh_.vertex(cp);
-    // |v a| is the edge opposite cp, |v b| opposite cn, |a b| opposite c.
-    const double lva = edgeLength_[cp], lvb = edgeLength_[cn], lab = edgeLength_[c];
-    for (int k = 0; k < 2; ++k) {
-      const int x = k == 0 ? a : b, y = k == 0 ? b : a;
-      if (acceptedRun_[x] == run_) continue;  // final in this run
-      const int cx = k == 0 ? cn : cp;        // corner at x in this face
-      const double lxv = k == 0 ? lva : lvb, lvy = k == 0 ? lvb : lva;
-      relax(x, uv + 0.5 * (P_[v] + P_[x]) * lxv, lv);
-      if (known(y)) relax(x, v, y, lxv, lab, lvy);
-      const int split = splits_.splitOfCorner[cx];
-      if (split >= 0) {  // obtuse at x: the virtual triangle x, v, R
-        const AcuteSplit& sp = splits_.splits[split];
-        if (known(sp.vertex))
-          relax(x, v, sp.vertex, lxv, sp.lenXR, mesh_.vertex(TriMesh::next(cx)) == v ? sp.lenAR : sp.lenBR);
+  const auto edgeCost = [&](int x, double length) {
+    if constexpr (kUniform) return uv + length;
+    else return uv + 0.5 * (P_[v] + P_[x]) * length;
+  };
+  // Triangles (v, a, b) around v: each offers a and b one candidate, the best of the edge
+  // update, the triangle update and the virtual triangle of an acute split.
+  const StarFace* end = star_.data() + mesh_.vertexCornerBegin[v + 1];
+  for (const StarFace* f = star_.data() + mesh_.vertexCornerBegin[v]; f != end; ++f) {
+    if (acceptedRun_[f->a] != run_) {  // target a, third vertex b
+      Candidate best{edgeCost(f->a, f->lva), lv};
+      if (known(f->b)) offerTriangle<kUniform>(best, f->a, v, f->b, f->lva, f->lab, f->lvb);
+      if (f->splitAtA >= 0) {  // obtuse at a: the virtual triangle a, v, R (v is B of that corner)
+        const AcuteSplit& sp = splits_.splits[f->splitAtA];
+        if (known(sp.vertex)) offerTriangle<kUniform>(best, f->a, v, sp.vertex, f->lva, sp.lenXR, sp.lenBR);
       }
+      if (best.u < U_[f->a]) push(f->a, best.u, best.label);
+    }
+    if (acceptedRun_[f->b] != run_) {  // target b, third vertex a
+      Candidate best{edgeCost(f->b, f->lvb), lv};
+      if (known(f->a)) offerTriangle<kUniform>(best, f->b, v, f->a, f->lvb, f->lab, f->lva);
+      if (f->splitAtB >= 0) {  // obtuse at b: v is A of that corner
+        const AcuteSplit& sp = splits_.splits[f->splitAtB];
+        if (known(sp.vertex)) offerTriangle<kUniform>(best, f->b, v, sp.vertex, f->lvb, sp.lenXR, sp.lenAR);
+      }
+      if (best.u < U_[f->b]) push(f->b, best.u, best.label);
     }
   }
   // v as the far vertex R of acute splits: the virtual triangles X, A, R and X, B, R.
@@ -205,8 +225,10 @@ void FastMarcher::scatter(int v) {
     const int x = mesh_.vertex(sp.corner);
     if (acceptedRun_[x] == run_) continue;
     const int a = mesh_.vertex(TriMesh::next(sp.corner)), b = mesh_.vertex(TriMesh::prev(sp.corner));
-    if (known(a)) relax(x, a, v, edgeLength_[TriMesh::prev(sp.corner)], sp.lenXR, sp.lenAR);
-    if (known(b)) relax(x, b, v, edgeLength_[TriMesh::next(sp.corner)], sp.lenXR, sp.lenBR);
+    Candidate best{U_[x], label_[x]};
+    if (known(a)) offerTriangle<kUniform>(best, x, a, v, sp.lenXA, sp.lenXR, sp.lenAR);
+    if (known(b)) offerTriangle<kUniform>(best, x, b, v, sp.lenXB, sp.lenXR, sp.lenBR);
+    if (best.u < U_[x]) push(x, best.u, best.label);
   }
 }
 
@@ -223,13 +245,8 @@ Status FastMarcher::propagate(const FastMarchingParams& params, Progress progres
   size_t targetsReached = 0;
   int sinceReport = 0;
   while (!heap_.empty()) {
-    const HeapEntry top = heap_.front();
-    const int v = top.v;
-    const bool stale = acceptedRun_[v] == run_ || top.u != U_[v];
-    if (!stale && top.u > params.maxDistance) break;  // left in the heap: endRun() clears it
-    std::pop_heap(heap_.begin(), heap_.end(), Later{});
-    heap_.pop_back();
-    if (stale) continue;
+    if (heap_.top().key > params.maxDistance) break;  // left in the heap: endRun() clears it
+    const int v = heap_.pop();
     acceptedRun_[v] = run_;
     accepted_.push_back(v);
     if (++sinceReport == 4096) {
@@ -239,7 +256,11 @@ Status FastMarcher::propagate(const FastMarchingParams& params, Progress progres
         return cancelled();
       }
     }
-    scatter(v);
+    if (uniform_) {
+      scatter<true>(v);
+    } else {
+      scatter<false>(v);
+    }
     if (withTargets && std::binary_search(targets.begin(), targets.end(), v) && ++targetsReached == targets.size())
       break;
   }
@@ -255,7 +276,7 @@ void FastMarcher::endRun() {
       label_[s.v] = s.label;
       acceptedRun_[s.v] = s.run;
     }
-  for (const HeapEntry& e : heap_)
+  for (const IndexedHeap::Entry& e : heap_.entries())
     if (acceptedRun_[e.v] == 0) {
       U_[e.v] = kUnreached;
       label_[e.v] = -1;

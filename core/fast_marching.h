@@ -20,6 +20,8 @@
 #include <vector>
 
 #include "core/acute_split.h"
+#include "core/eikonal_update.h"
+#include "core/indexed_heap.h"
 #include "core/metric.h"
 #include "core/progress.h"
 #include "core/status.h"
@@ -84,9 +86,9 @@ class FastMarcher {
   const AcuteSplits& acuteSplits() const { return splits_; }
 
  private:
-  struct HeapEntry {
+  struct Candidate {  // the best update found so far for one vertex
     double u;
-    int v;
+    int label;
   };
   struct Saved {  // value of a vertex before the current run improved it tentatively
     int v, label, run;
@@ -98,8 +100,12 @@ class FastMarcher {
   /// Offers x the value u (edge update) with the given label.
   void relax(int x, double u, int label);
   /// Offers x the update of the (possibly virtual) triangle x, s, t; s and t are known.
-  void relax(int x, int s, int t, double lxs, double lxt, double lst);
+  template <bool kUniform>
+  void offerTriangle(Candidate& best, int x, int s, int t, double lxs, double lxt, double lst) const;
+  /// Updates the neighbours of the newly accepted vertex v.
+  template <bool kUniform>
   void scatter(int v);
+  double cornerEdgeLength(int corner) const;
   /// Offers the vertices of the faces around a source the length of straight segments from the
   /// source point in the unfolding of those faces (kSeedDepth rings): exact values where a point
   /// source is too close for the triangle updates to be causal.
@@ -107,10 +113,18 @@ class FastMarcher {
                        int enteredThrough, int depth, int label);
   void endRun();
 
+  /// A face (v, a, b) around v, as the hot loop reads it: contiguous per vertex.
+  struct StarFace {
+    int a, b;                  ///< the other vertices, in face order
+    int splitAtA, splitAtB;    ///< acute split of the corner at a / b in this face, or -1
+    double lva, lvb, lab;      ///< edge lengths
+  };
+
   const TriMesh& mesh_;
   AcuteSplits splits_;
+  bool uniform_;
   std::vector<double> P_;           ///< per vertex; all ones for a uniform metric
-  std::vector<double> edgeLength_;  ///< per corner: length of the opposite edge
+  std::vector<StarFace> star_;      ///< aligned with mesh_.vertexCorners
   std::vector<double> U_;
   std::vector<int> label_;
   std::vector<int> acceptedRun_;    ///< run in which the vertex was last accepted; 0 = not known
@@ -119,7 +133,7 @@ class FastMarcher {
   std::vector<int> touched_;        ///< vertices given a finite value since reset()
   std::vector<int> accepted_;
   std::vector<Saved> saved_;
-  std::vector<HeapEntry> heap_;
+  IndexedHeap heap_;
   std::vector<std::pair<Vec2, Vec2>> seedChain_;  ///< edges crossed by the current unfolding
 };
 

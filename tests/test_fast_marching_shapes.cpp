@@ -131,5 +131,50 @@ TEST(FastMarchingShapes, TwoSpeedPlaneRefractsByFermatsPrinciple) {
   }
 }
 
+
+/// Largest angle of any face, in degrees.
+double largestAngleDegrees(const TriMesh& m) {
+  double largest = 0.0;
+  for (const Tri& t : m.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 u = m.positions[t[(k + 1) % 3]] - m.positions[t[k]], w = m.positions[t[(k + 2) % 3]] - m.positions[t[k]];
+      largest = std::max(largest, std::acos(std::clamp(u.dot(w) / (u.norm() * w.norm()), -1.0, 1.0)) * 180.0 / M_PI);
+    }
+  return largest;
+}
+
+// Strongly jittered grids (angles above 150 degrees, up to nearly 180): the acceptance order
+// is monotone and the mean relative error against the Euclidean distance is below 1% at every
+// size, 100 x 100 included. The observed order is printed, not asserted: the update is exact on
+// planes, so the error comes from rare near-degenerate configurations and has no clean order
+// (measured: jitter 0.35 falls 0.12% -> 0.011%, order 1.1; jitter 0.4 and 0.45 stay near 0.1-0.2%).
+TEST(FastMarchingShapes, StronglyJitteredGrids) {
+  const std::vector<int> sizes = {25, 50, 100, 200};
+  for (double jitter : {0.35, 0.4, 0.45}) {
+    std::vector<double> errors;
+    for (int n : sizes) {
+      double sum = 0.0, biggest = 0.0;
+      for (unsigned seed : {11u, 12u, 13u}) {
+        const TriMesh m = test::planeGrid(n, 1.0, jitter, seed);
+        biggest = std::max(biggest, largestAngleDegrees(m));
+        const int source = (n / 2) * (n + 1) + n / 2;
+        const auto r = fastMarching(m, Metric::uniform(), {source});
+        ASSERT_TRUE(r);
+        for (size_t i = 1; i < r->acceptedOrder.size(); ++i)
+          ASSERT_GE(r->distance[r->acceptedOrder[i]], r->distance[r->acceptedOrder[i - 1]]);
+        const Vec3 s = m.positions[source];
+        sum += compare(m, r->distance, [&](int v) { return (m.positions[v] - s).norm(); }, 0.05).meanRelative;
+      }
+      errors.push_back(sum / 3.0);
+      std::printf("jitter %.2f, n %3d: largest angle %.1f deg, mean relative error over 3 seeds %.5f %%\n", jitter, n,
+                  biggest, 100 * errors.back());
+      EXPECT_GT(biggest, 150.0);
+      EXPECT_LT(errors.back(), 0.01);
+    }
+    std::printf("jitter %.2f: observed order n 25 -> 200: %.2f\n", jitter,
+                std::log(errors.front() / errors.back()) / std::log(double(sizes.back()) / sizes.front()));
+  }
+}
+
 }  // namespace
 }  // namespace gr

@@ -10,8 +10,11 @@
 namespace gr {
 namespace {
 
-/// Rings of faces around a source initialised by unfolding (see seedByUnfolding).
-constexpr int kSeedDepth = 3;
+/// Rings of faces beyond the source's own faces initialised by unfolding (seedByUnfolding). A
+/// point inside a face needs a few rings before the triangle updates become causal; a vertex
+/// source needs only the ring across its star's outer edges.
+constexpr int kSeedDepthFace = 3;
+constexpr int kSeedDepthVertex = 1;
 
 }  // namespace
 
@@ -89,7 +92,7 @@ Status FastMarcher::addSource(int v, int label) {
     layout[TriMesh::next(c) % 3] = Vec2(la, 0.0);
     const double x = la > 0.0 ? (la * la + lb * lb - lc * lc) / (2.0 * la) : 0.0;
     layout[TriMesh::prev(c) % 3] = Vec2(x, std::sqrt(std::max(0.0, lb * lb - x * x)));
-    seedByUnfolding(Vec2(0.0, 0.0), P_[v], TriMesh::face(c), layout, -1, kSeedDepth, label);
+    seedByUnfolding(Vec2(0.0, 0.0), P_[v], TriMesh::face(c), layout, -1, kSeedDepthVertex, label);
   }
   return Status::ok();
 }
@@ -150,7 +153,7 @@ Status FastMarcher::addSource(const SurfacePoint& point, int label) {
   const std::array<Vec2, 3> layout = {Vec2(0.0, 0.0), Vec2(l01, 0.0),
                                       Vec2(x, std::sqrt(std::max(0.0, l02 * l02 - x * x)))};
   const Vec2 p = b[0] * layout[0] + b[1] * layout[1] + b[2] * layout[2];
-  seedByUnfolding(p, pAtPoint, f, layout, -1, kSeedDepth, label);
+  seedByUnfolding(p, pAtPoint, f, layout, -1, kSeedDepthFace, label);
   return Status::ok();
 }
 

@@ -27,27 +27,54 @@ Vec3 SurfacePoint::position(const TriMesh& mesh) const {
 FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric)
     : mesh_(mesh), splits_(findAcuteSplits(mesh)), uniform_(metric.isUniform()) {
   const int nv = mesh.vertexCount();
-  P_ = metric.isUniform() ? std::vector<double>(nv, 1.0) : metric.P;
-  // The star of each vertex, contiguous, in the order of mesh.vertexCorners.
-  star_.resize(mesh.vertexCorners.size());
-  for (size_t i = 0; i < mesh.vertexCorners.size(); ++i) {
-    const int c = mesh.vertexCorners[i];
-    const int cn = TriMesh::next(c), cp = TriMesh::prev(c);
-    StarFace& f = star_[i];
-    f.a = mesh.vertex(cn);
-    f.b = mesh.vertex(cp);
-    f.splitAtA = splits_.splitOfCorner[cn];
-    f.splitAtB = splits_.splitOfCorner[cp];
-    const double lva = cornerEdgeLength(cp), lvb = cornerEdgeLength(cn), lab = cornerEdgeLength(c);
-    f.lva = lva;
-    f.lvb = lvb;
-    f.lab = lab;
+  // Slots: the vertices in breadth-first order, so a front touches nearby memory.
+  slotOf_.assign(nv, -1);
+  vertexOf_.reserve(nv);
+  for (int root = 0; root < nv; ++root) {
+    if (slotOf_[root] >= 0) continue;
+    slotOf_[root] = static_cast<int>(vertexOf_.size());
+    vertexOf_.push_back(root);
+    for (size_t next = vertexOf_.size() - 1; next < vertexOf_.size(); ++next) {
+      const int v = vertexOf_[next];
+      for (const int* c = mesh.cornersBegin(v); c != mesh.cornersEnd(v); ++c)
+        for (int w : {mesh.vertex(TriMesh::next(*c)), mesh.vertex(TriMesh::prev(*c))})
+          if (slotOf_[w] < 0) {
+            slotOf_[w] = static_cast<int>(vertexOf_.size());
+            vertexOf_.push_back(w);
+          }
+    }
   }
+  P_.assign(nv, 1.0);
+  if (!metric.isUniform())
+    for (int i = 0; i < nv; ++i) P_[i] = metric.P[vertexOf_[i]];
+  // Edge lengths once per corner (the edge it faces), then the star of each slot, contiguous.
+  std::vector<double> length(3 * static_cast<size_t>(mesh.faceCount()));
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c) length[c] = cornerEdgeLength(c);
+  starBegin_.assign(nv + 1, 0);
+  for (int i = 0; i < nv; ++i) starBegin_[i + 1] = starBegin_[i] + mesh.valence(vertexOf_[i]);
+  star_.resize(mesh.vertexCorners.size());
+  for (int i = 0; i < nv; ++i) {
+    StarFace* f = star_.data() + starBegin_[i];
+    for (const int* it = mesh.cornersBegin(vertexOf_[i]); it != mesh.cornersEnd(vertexOf_[i]); ++it, ++f) {
+      const int c = *it;
+      const int cn = TriMesh::next(c), cp = TriMesh::prev(c);
+      f->a = slotOf_[mesh.vertex(cn)];
+      f->b = slotOf_[mesh.vertex(cp)];
+      f->splitAtA = splits_.splitOfCorner[cn];
+      f->splitAtB = splits_.splitOfCorner[cp];
+      f->lva = length[cp];
+      f->lvb = length[cn];
+      f->lab = length[c];
+    }
+  }
+  splitSlot_.resize(splits_.splits.size());
+  for (size_t i = 0; i < splits_.splits.size(); ++i) splitSlot_[i] = slotOf_[splits_.splits[i].vertex];
+  node_.assign(nv, Node{kUnreached, 0, -1});
   U_.assign(nv, kUnreached);
   label_.assign(nv, -1);
-  acceptedRun_.assign(nv, 0);
   touched_.reserve(nv);
   accepted_.reserve(nv);
+  acceptedVertices_.reserve(nv);
   heap_.resize(nv);
 }
 
@@ -56,13 +83,14 @@ double FastMarcher::cornerEdgeLength(int c) const {
 }
 
 void FastMarcher::reset() {
-  for (int v : touched_) {
-    U_[v] = kUnreached;
-    label_[v] = -1;
-    acceptedRun_[v] = 0;
+  for (int slot : touched_) {
+    node_[slot] = Node{kUnreached, 0, -1};
+    U_[vertexOf_[slot]] = kUnreached;
+    label_[vertexOf_[slot]] = -1;
   }
   touched_.clear();
   accepted_.clear();
+  acceptedVertices_.clear();
   saved_.clear();
   heap_.clear();
   runOpen_ = false;
@@ -73,6 +101,7 @@ void FastMarcher::beginRun() {
   runOpen_ = true;
   ++run_;
   accepted_.clear();
+  acceptedVertices_.clear();
   saved_.clear();
 }
 
@@ -81,8 +110,8 @@ Status FastMarcher::addSource(int v, int label) {
     return invalidInput("source vertex " + std::to_string(v) + " does not exist (the mesh has " +
                         std::to_string(mesh_.vertexCount()) + " vertices)");
   beginRun();
-  if (U_[v] <= 0.0) return Status::ok();
-  push(v, 0.0, label);
+  if (node_[slotOf_[v]].u <= 0.0) return Status::ok();
+  push(slotOf_[v], 0.0, label);
   // Each incident face in its own plane, v at the origin.
   for (const int* it = mesh_.cornersBegin(v); it != mesh_.cornersEnd(v); ++it) {
     const int c = *it;
@@ -92,7 +121,7 @@ Status FastMarcher::addSource(int v, int label) {
     layout[TriMesh::next(c) % 3] = Vec2(la, 0.0);
     const double x = la > 0.0 ? (la * la + lb * lb - lc * lc) / (2.0 * la) : 0.0;
     layout[TriMesh::prev(c) % 3] = Vec2(x, std::sqrt(std::max(0.0, lb * lb - x * x)));
-    seedByUnfolding(Vec2(0.0, 0.0), P_[v], TriMesh::face(c), layout, -1, kSeedDepthVertex, label);
+    seedByUnfolding(Vec2(0.0, 0.0), P_[slotOf_[v]], TriMesh::face(c), layout, -1, kSeedDepthVertex, label);
   }
   return Status::ok();
 }
@@ -105,7 +134,7 @@ void FastMarcher::seedByUnfolding(const Vec2& p, double pAtSource, int face, con
     for (size_t e = 0; e < seedChain_.size() && inside; ++e)
       inside = segmentsIntersect(p, layout[k], seedChain_[e].first, seedChain_[e].second);
     if (inside) {
-      const int w = mesh_.triangles[face][k];
+      const int w = slotOf_[mesh_.triangles[face][k]];
       relax(w, 0.5 * (pAtSource + P_[w]) * (layout[k] - p).norm(), label);
     }
   }
@@ -146,7 +175,7 @@ Status FastMarcher::addSource(const SurfacePoint& point, int label) {
   beginRun();
   const int f = point.face;
   const Tri& t = mesh_.triangles[f];
-  const double pAtPoint = b[0] * P_[t[0]] + b[1] * P_[t[1]] + b[2] * P_[t[2]];
+  const double pAtPoint = b[0] * P_[slotOf_[t[0]]] + b[1] * P_[slotOf_[t[1]]] + b[2] * P_[slotOf_[t[2]]];
   // The face in its plane: t[0] at the origin, t[1] on the x axis.
   const double l01 = cornerEdgeLength(3 * f + 2), l02 = cornerEdgeLength(3 * f + 1), l12 = cornerEdgeLength(3 * f);
   const double x = l01 > 0.0 ? (l01 * l01 + l02 * l02 - l12 * l12) / (2.0 * l01) : 0.0;
@@ -158,24 +187,25 @@ Status FastMarcher::addSource(const SurfacePoint& point, int label) {
 }
 
 void FastMarcher::push(int v, double u, int label) {
-  if (U_[v] == kUnreached) {
+  Node& n = node_[v];
+  if (n.u == kUnreached) {
     touched_.push_back(v);
-  } else if (acceptedRun_[v] != 0) {  // a value of an earlier run, improved: keep it to restore
-    saved_.push_back({v, label_[v], acceptedRun_[v], U_[v]});
-    acceptedRun_[v] = 0;
+  } else if (n.run != 0) {  // a value of an earlier run, improved: keep it to restore
+    saved_.push_back({v, n.label, n.run, n.u});
+    n.run = 0;
   }
-  U_[v] = u;
-  label_[v] = label;
+  n.u = u;
+  n.label = label;
   heap_.pushOrDecrease(v, u);
 }
 
 void FastMarcher::relax(int x, double u, int label) {
-  if (u < U_[x]) push(x, u, label);
+  if (u < node_[x].u) push(x, u, label);
 }
 
 template <bool kUniform>
 void FastMarcher::offerTriangle(Candidate& best, int x, int s, int t, double lxs, double lxt, double lst) const {
-  const double us = U_[s], ut = U_[t];
+  const double us = node_[s].u, ut = node_[t].u;
   if (std::max(us, ut) >= best.u) return;  // causal values are >= both: it cannot win
   const TriangleFrame frame = triangleFrame(lxs, lxt, lst);
   double u;
@@ -188,50 +218,57 @@ void FastMarcher::offerTriangle(Candidate& best, int x, int s, int t, double lxs
   // Causality: a value below a neighbour's would break the acceptance order (obtuse angles).
   // The label of the nearer vertex. Updates that mix two fronts are kept on purpose: skipping
   // them would make a multi-source field depend on the order the sources were added.
-  if (u < best.u && u >= std::max(us, ut)) best = {u, us <= ut ? label_[s] : label_[t]};
+  if (u < best.u && u >= std::max(us, ut)) best = {u, us <= ut ? node_[s].label : node_[t].label};
 }
 
 template <bool kUniform>
 void FastMarcher::scatter(int v) {
-  const double uv = U_[v];
-  const int lv = label_[v];
+  // Local copies of the array pointers: push() writes through node_, and the compiler would
+  // otherwise reload them from `this` after every store.
+  Node* const node = node_.data();
+  const StarFace* const star = star_.data();
+  const double uv = node[v].u;
+  const int lv = node[v].label;
   const auto edgeCost = [&](int x, double length) {
     if constexpr (kUniform) return uv + length;
     else return uv + 0.5 * (P_[v] + P_[x]) * length;
   };
   // Triangles (v, a, b) around v: each offers a and b one candidate, the best of the edge
   // update, the triangle update and the virtual triangle of an acute split.
-  const StarFace* end = star_.data() + mesh_.vertexCornerBegin[v + 1];
-  for (const StarFace* f = star_.data() + mesh_.vertexCornerBegin[v]; f != end; ++f) {
-    if (acceptedRun_[f->a] != run_) {  // target a, third vertex b
+  const StarFace* end = star + starBegin_[v + 1];
+  for (const StarFace* f = star + starBegin_[v]; f != end; ++f) {
+    if (node[f->a].run != run_) {  // target a, third vertex b
       Candidate best{edgeCost(f->a, f->lva), lv};
       if (known(f->b)) offerTriangle<kUniform>(best, f->a, v, f->b, f->lva, f->lab, f->lvb);
       if (f->splitAtA >= 0) {  // obtuse at a: the virtual triangle a, v, R (v is B of that corner)
         const AcuteSplit& sp = splits_.splits[f->splitAtA];
-        if (known(sp.vertex)) offerTriangle<kUniform>(best, f->a, v, sp.vertex, f->lva, sp.lenXR, sp.lenBR);
+        const int r = splitSlot_[f->splitAtA];
+        if (known(r)) offerTriangle<kUniform>(best, f->a, v, r, f->lva, sp.lenXR, sp.lenBR);
       }
-      if (best.u < U_[f->a]) push(f->a, best.u, best.label);
+      if (best.u < node[f->a].u) push(f->a, best.u, best.label);
     }
-    if (acceptedRun_[f->b] != run_) {  // target b, third vertex a
+    if (node[f->b].run != run_) {  // target b, third vertex a
       Candidate best{edgeCost(f->b, f->lvb), lv};
       if (known(f->a)) offerTriangle<kUniform>(best, f->b, v, f->a, f->lvb, f->lab, f->lva);
       if (f->splitAtB >= 0) {  // obtuse at b: v is A of that corner
         const AcuteSplit& sp = splits_.splits[f->splitAtB];
-        if (known(sp.vertex)) offerTriangle<kUniform>(best, f->b, v, sp.vertex, f->lvb, sp.lenXR, sp.lenAR);
+        const int r = splitSlot_[f->splitAtB];
+        if (known(r)) offerTriangle<kUniform>(best, f->b, v, r, f->lvb, sp.lenXR, sp.lenAR);
       }
-      if (best.u < U_[f->b]) push(f->b, best.u, best.label);
+      if (best.u < node[f->b].u) push(f->b, best.u, best.label);
     }
   }
   // v as the far vertex R of acute splits: the virtual triangles X, A, R and X, B, R.
-  for (int i = splits_.byVertexBegin[v]; i < splits_.byVertexBegin[v + 1]; ++i) {
+  const int vertex = vertexOf_[v];
+  for (int i = splits_.byVertexBegin[vertex]; i < splits_.byVertexBegin[vertex + 1]; ++i) {
     const AcuteSplit& sp = splits_.splits[splits_.byVertex[i]];
-    const int x = mesh_.vertex(sp.corner);
-    if (acceptedRun_[x] == run_) continue;
-    const int a = mesh_.vertex(TriMesh::next(sp.corner)), b = mesh_.vertex(TriMesh::prev(sp.corner));
-    Candidate best{U_[x], label_[x]};
+    const int x = slotOf_[mesh_.vertex(sp.corner)];
+    if (node[x].run == run_) continue;
+    const int a = slotOf_[mesh_.vertex(TriMesh::next(sp.corner))], b = slotOf_[mesh_.vertex(TriMesh::prev(sp.corner))];
+    Candidate best{node[x].u, node[x].label};
     if (known(a)) offerTriangle<kUniform>(best, x, a, v, sp.lenXA, sp.lenXR, sp.lenAR);
     if (known(b)) offerTriangle<kUniform>(best, x, b, v, sp.lenXB, sp.lenXR, sp.lenBR);
-    if (best.u < U_[x]) push(x, best.u, best.label);
+    if (best.u < node[x].u) push(x, best.u, best.label);
   }
 }
 
@@ -250,7 +287,7 @@ Status FastMarcher::propagate(const FastMarchingParams& params, Progress progres
   while (!heap_.empty()) {
     if (heap_.top().key > params.maxDistance) break;  // left in the heap: endRun() clears it
     const int v = heap_.pop();
-    acceptedRun_[v] = run_;
+    node_[v].run = run_;
     accepted_.push_back(v);
     if (++sinceReport == 4096) {
       sinceReport = 0;
@@ -264,7 +301,8 @@ Status FastMarcher::propagate(const FastMarchingParams& params, Progress progres
     } else {
       scatter<false>(v);
     }
-    if (withTargets && std::binary_search(targets.begin(), targets.end(), v) && ++targetsReached == targets.size())
+    if (withTargets && std::binary_search(targets.begin(), targets.end(), vertexOf_[v]) &&
+        ++targetsReached == targets.size())
       break;
   }
   endRun();
@@ -274,16 +312,21 @@ Status FastMarcher::propagate(const FastMarchingParams& params, Progress progres
 void FastMarcher::endRun() {
   // Values still tentative are not distances: restore what earlier runs had, clear the rest.
   for (const Saved& s : saved_)
-    if (acceptedRun_[s.v] != run_) {
-      U_[s.v] = s.u;
-      label_[s.v] = s.label;
-      acceptedRun_[s.v] = s.run;
-    }
+    if (node_[s.v].run != run_) node_[s.v] = Node{s.u, s.run, s.label};
   for (const IndexedHeap::Entry& e : heap_.entries())
-    if (acceptedRun_[e.v] == 0) {
-      U_[e.v] = kUnreached;
-      label_[e.v] = -1;
-    }
+    if (node_[e.v].run == 0) node_[e.v] = Node{kUnreached, 0, -1};
+  // The public arrays: only vertices this run changed.
+  const auto publish = [this](int slot) {
+    U_[vertexOf_[slot]] = node_[slot].u;
+    label_[vertexOf_[slot]] = node_[slot].label;
+  };
+  acceptedVertices_.clear();
+  for (int slot : accepted_) {
+    publish(slot);
+    acceptedVertices_.push_back(vertexOf_[slot]);
+  }
+  for (const Saved& s : saved_) publish(s.v);
+  for (const IndexedHeap::Entry& e : heap_.entries()) publish(e.v);
   heap_.clear();
   saved_.clear();
   runOpen_ = false;

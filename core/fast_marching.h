@@ -81,7 +81,7 @@ class FastMarcher {
   const std::vector<int>& label() const { return label_; }
   /// Vertices accepted by the last propagate(), in order: all reached vertices for a first
   /// run, the improved ones for an incremental run.
-  const std::vector<int>& acceptedOrder() const { return accepted_; }
+  const std::vector<int>& acceptedOrder() const { return acceptedVertices_; }
   const TriMesh& mesh() const { return mesh_; }
   const AcuteSplits& acuteSplits() const { return splits_; }
 
@@ -96,7 +96,7 @@ class FastMarcher {
   };
   void beginRun();
   void push(int v, double u, int label);
-  bool known(int v) const { return acceptedRun_[v] != 0; }
+  bool known(int v) const { return node_[v].run != 0; }
   /// Offers x the value u (edge update) with the given label.
   void relax(int x, double u, int label);
   /// Offers x the update of the (possibly virtual) triangle x, s, t; s and t are known.
@@ -123,15 +123,28 @@ class FastMarcher {
   const TriMesh& mesh_;
   AcuteSplits splits_;
   bool uniform_;
-  std::vector<double> P_;           ///< per vertex; all ones for a uniform metric
-  std::vector<StarFace> star_;      ///< aligned with mesh_.vertexCorners
-  std::vector<double> U_;
-  std::vector<int> label_;
-  std::vector<int> acceptedRun_;    ///< run in which the vertex was last accepted; 0 = not known
+  std::vector<double> P_;           ///< per slot; all ones for a uniform metric
+  // The hot loop works on slots: vertices renumbered in breadth-first order for memory
+  // locality; the public arrays and the API use the mesh's vertex numbers.
+  std::vector<int> slotOf_;         ///< per vertex
+  std::vector<int> vertexOf_;       ///< per slot
+  std::vector<int> starBegin_;      ///< per slot, into star_
+  std::vector<StarFace> star_;      ///< the faces around each slot (a, b are slots)
+  std::vector<int> splitSlot_;      ///< per acute split, the slot of its far vertex R
+  /// Per-vertex state the hot loop reads together (one cache line for a neighbour).
+  struct Node {
+    double u;   ///< U, tentative while in the heap
+    int run;    ///< run in which the vertex was last accepted; 0 = not known
+    int label;
+  };
+  std::vector<Node> node_;
+  std::vector<double> U_;           ///< public copies of node_.u and node_.label, updated at the
+  std::vector<int> label_;          ///< end of each run for the vertices it changed
   int run_ = 0;
   bool runOpen_ = false;
-  std::vector<int> touched_;        ///< vertices given a finite value since reset()
-  std::vector<int> accepted_;
+  std::vector<int> touched_;        ///< slots given a finite value since reset()
+  std::vector<int> accepted_;         ///< slots accepted by the current or last run
+  std::vector<int> acceptedVertices_; ///< the same as vertices, published by endRun()
   std::vector<Saved> saved_;
   IndexedHeap heap_;
   std::vector<std::pair<Vec2, Vec2>> seedChain_;  ///< edges crossed by the current unfolding

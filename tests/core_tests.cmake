@@ -5,3 +5,4 @@ gr_add_core_test(test_fast_marching_incremental test_fast_marching_incremental.c
 gr_add_core_test(test_fast_marching_shapes test_fast_marching_shapes.cpp)
 gr_add_core_test(test_voronoi_boundary test_voronoi_boundary.cpp)
 gr_add_core_test(test_geodesic_path test_geodesic_path.cpp)
+gr_add_core_test(test_farthest_point_sampling test_farthest_point_sampling.cpp)

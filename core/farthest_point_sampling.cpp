@@ -1,0 +1,89 @@
+#include "core/farthest_point_sampling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <string>
+
+#include "core/fast_marching.h"
+
+namespace gr {
+namespace {
+
+struct Farthest {  // max-heap entry; stale when the vertex's distance changed since
+  double u;
+  int v;
+  bool operator<(const Farthest& o) const { return u < o.u || (u == o.u && v > o.v); }
+};
+
+}  // namespace
+
+Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& metric, const FpsParams& params,
+                                          Progress progress) {
+  if (params.targetCount < 0) return invalidInput("the target sample count must be >= 0");
+  if (!(params.minSpacing >= 0.0) || !std::isfinite(params.minSpacing))
+    return invalidInput("the sample spacing must be finite and >= 0");
+  if (params.targetCount == 0 && params.minSpacing == 0.0)
+    return invalidInput("give a target sample count or a spacing (both are 0)");
+  const int usable = mesh.vertexCount() - mesh.topology.isolatedVertices;
+  if (params.targetCount > usable)
+    return invalidInput("cannot place " + std::to_string(params.targetCount) + " samples on " +
+                        std::to_string(usable) + " vertices");
+  if (!metric.isUniform() && static_cast<int>(metric.P.size()) != mesh.vertexCount())
+    return invalidInput("the metric does not have one value per vertex");
+
+  FastMarcher marcher(mesh, metric);
+  // Start: the vertex farthest from a seeded vertex of a face.
+  int start = static_cast<int>(params.seed % static_cast<unsigned>(mesh.vertexCount()));
+  while (mesh.valence(start) == 0) start = (start + 1) % mesh.vertexCount();
+  if (Status s = marcher.addSource(start, 0); !s) return s;
+  if (Status s = marcher.propagate(); !s) return s;
+  int first = start;
+  for (int v : marcher.acceptedOrder())
+    if (marcher.distance()[v] > marcher.distance()[first]) first = v;
+  marcher.reset();
+
+  // Components other than the start's have U = +inf: each gets a first sample (its lowest
+  // vertex) before any component gets a second one.
+  std::vector<int> firstOfComponent(mesh.topology.components, -1);
+  for (int v = mesh.vertexCount() - 1; v >= 0; --v)
+    if (mesh.topology.componentOfVertex[v] >= 0) firstOfComponent[mesh.topology.componentOfVertex[v]] = v;
+  std::vector<int> pending;
+  for (int c = 0; c < mesh.topology.components; ++c)
+    if (c != mesh.topology.componentOfVertex[first]) pending.push_back(firstOfComponent[c]);
+  std::reverse(pending.begin(), pending.end());
+
+  FpsResult r;
+  const std::vector<double>& U = marcher.distance();
+  std::priority_queue<Farthest> farthest;
+  const int cap = params.targetCount > 0 ? params.targetCount : usable;
+  int next = first;
+  double nextU = kUnreached;
+  for (;;) {
+    r.samples.push_back(next);
+    r.insertionDistance.push_back(nextU);
+    if (Status s = marcher.addSource(next, static_cast<int>(r.samples.size()) - 1); !s) return s;
+    if (Status s = marcher.propagate(); !s) return s;
+    for (int v : marcher.acceptedOrder()) farthest.push({U[v], v});
+    if (static_cast<int>(r.samples.size()) >= cap) break;
+    if (!progress.report(double(r.samples.size()) / cap, "Farthest point sampling")) return cancelled();
+    if (!pending.empty()) {
+      next = pending.back();
+      pending.pop_back();
+      nextU = kUnreached;
+      continue;
+    }
+    while (!farthest.empty() && farthest.top().u != U[farthest.top().v]) farthest.pop();  // stale
+    if (farthest.empty() || farthest.top().u <= 0.0) break;  // every vertex is a sample
+    next = farthest.top().v;
+    nextU = farthest.top().u;
+    if (params.minSpacing > 0.0 && nextU < params.minSpacing) break;
+  }
+  while (!farthest.empty() && farthest.top().u != U[farthest.top().v]) farthest.pop();
+  r.coveringRadius = farthest.empty() ? 0.0 : farthest.top().u;
+  r.distance = U;
+  r.region = marcher.label();
+  return r;
+}
+
+}  // namespace gr

@@ -1,0 +1,42 @@
+// Greedy farthest-point sampling of a surface (paper §3.1).
+//
+// The first sample is the vertex farthest from a start vertex chosen by `seed`; each next sample
+// is the vertex farthest from all samples so far, where the geodesic distance U_n is largest.
+// U_{n+1} = min(U_n, U_x) is updated incrementally: the new front only enters the vertices it
+// improves (FastMarcher). The maximum is tracked in a max-heap fed with the vertices each step
+// changed, so no step scans all vertices. A component with no sample yet is infinitely far: each
+// other component gets its lowest-numbered vertex as first sample before any component gets a
+// second one.
+// Cost: O(sum of improved regions * log) - about O(V log V log n) for n samples (paper Table 2).
+#pragma once
+
+#include <vector>
+
+#include "core/metric.h"
+#include "core/progress.h"
+#include "core/status.h"
+#include "core/tri_mesh.h"
+
+namespace gr {
+
+/// Options of greedy farthest-point sampling (Peyré & Cohen 2006, §3.1).
+struct FpsParams {
+  int targetCount = 1000;   ///< stop after this many samples (>= 1); 0 = stop on spacing only
+  double minSpacing = 0.0;  ///< also stop when the farthest distance is below this (mesh units); 0 = off
+  unsigned seed = 0;        ///< picks the start vertex: the same seed gives the same samples
+};
+
+struct FpsResult {
+  std::vector<int> samples;      ///< vertices, in the order they were chosen
+  std::vector<double> distance;  ///< per vertex, U to the nearest sample
+  std::vector<int> region;       ///< per vertex, index into `samples` (geodesic Voronoi cell)
+  double coveringRadius = 0.0;   ///< largest U at the end (the next sample's distance)
+  std::vector<double> insertionDistance;  ///< U_n at each sample when it was chosen (inf for the first of a component)
+};
+
+/// Fails (InvalidInput) on targetCount < 0, both stopping rules off, a negative or NaN spacing,
+/// or more samples than vertices in faces; (Cancelled) if the progress callback says so.
+Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& metric, const FpsParams& params = {},
+                                          Progress progress = {});
+
+}  // namespace gr

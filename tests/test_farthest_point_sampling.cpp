@@ -1,0 +1,124 @@
+// Greedy farthest-point sampling (paper §3.1). Oracles: a brute-force recomputation (one-shot
+// multi-source fast marching from all earlier samples, full scan for the maximum) and the
+// properties of a farthest-point net (covering radius <= every insertion distance).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/farthest_point_sampling.h"
+#include "core/fast_marching.h"
+#include "tests/test_support.h"
+
+namespace gr {
+namespace {
+
+TEST(FarthestPointSampling, EachSampleIsTheFarthestVertexFromTheEarlierOnes) {
+  const TriMesh m = test::loadRealMesh("fandisk.off");
+  FpsParams params;
+  params.targetCount = 40;
+  params.seed = 7;
+  const auto r = farthestPointSampling(m, Metric::uniform(), params);
+  ASSERT_TRUE(r) << r.status().message;
+  ASSERT_EQ(r->samples.size(), 40u);
+  // The first sample is the farthest vertex from the seeded start.
+  const auto fromStart = fastMarching(m, Metric::uniform(), {7});
+  EXPECT_EQ(fromStart->distance[r->samples[0]],
+            *std::max_element(fromStart->distance.begin(), fromStart->distance.end()));
+  for (size_t k = 1; k < r->samples.size(); ++k) {
+    const std::vector<int> earlier(r->samples.begin(), r->samples.begin() + k);
+    const auto field = fastMarching(m, Metric::uniform(), earlier);
+    const double best = *std::max_element(field->distance.begin(), field->distance.end());
+    EXPECT_EQ(field->distance[r->samples[k]], best) << "sample " << k << " is not the farthest vertex";
+    EXPECT_EQ(r->insertionDistance[k], best) << "sample " << k;
+  }
+}
+
+TEST(FarthestPointSampling, FormsANet) {
+  const TriMesh m = test::loadRealMesh("bunny00.off");
+  FpsParams params;
+  params.targetCount = 300;
+  const auto r = farthestPointSampling(m, Metric::uniform(), params);
+  ASSERT_TRUE(r);
+  // Insertion distances never increase, and all are at least the final covering radius.
+  for (size_t k = 2; k < r->insertionDistance.size(); ++k)
+    EXPECT_LE(r->insertionDistance[k], r->insertionDistance[k - 1]) << k;
+  EXPECT_GT(r->coveringRadius, 0.0);
+  EXPECT_LE(r->coveringRadius, r->insertionDistance.back());
+  // Every vertex is within the covering radius of a sample; regions partition the vertices.
+  std::set<int> regions;
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    ASSERT_LE(r->distance[v], r->coveringRadius) << v;
+    ASSERT_GE(r->region[v], 0);
+    regions.insert(r->region[v]);
+  }
+  EXPECT_EQ(regions.size(), 300u);
+  // Packing: each sample is at least the covering radius away from every other one.
+  const std::vector<int> sample10(r->samples.begin(), r->samples.begin() + 10);
+  for (size_t i = 0; i < sample10.size(); ++i) {
+    const auto d = fastMarching(m, Metric::uniform(), {sample10[i]});
+    for (int other : r->samples) {
+      if (other != sample10[i]) {
+        EXPECT_GE(d->distance[other], 0.99 * r->coveringRadius);
+      }
+    }
+  }
+}
+
+TEST(FarthestPointSampling, DeterministicForASeed) {
+  const TriMesh m = test::loadRealMesh("fandisk.off");
+  FpsParams params;
+  params.targetCount = 25;
+  params.seed = 3;
+  const auto a = farthestPointSampling(m, Metric::uniform(), params);
+  const auto b = farthestPointSampling(m, Metric::uniform(), params);
+  EXPECT_EQ(a->samples, b->samples);
+  params.seed = 4000;
+  const auto c = farthestPointSampling(m, Metric::uniform(), params);
+  EXPECT_NE(a->samples, c->samples);
+}
+
+TEST(FarthestPointSampling, SpacingStop) {
+  const TriMesh m = test::planeGrid(60);
+  FpsParams params;
+  params.targetCount = 0;
+  params.minSpacing = 0.1;
+  const auto r = farthestPointSampling(m, Metric::uniform(), params);
+  ASSERT_TRUE(r);
+  EXPECT_LT(r->coveringRadius, 0.1);
+  EXPECT_GE(r->insertionDistance.back(), 0.1);
+  // A unit square covered by discs of radius 0.1 needs at least 1 / (pi 0.01) ~ 32 of them.
+  EXPECT_GT(r->samples.size(), 31u);
+  EXPECT_LT(r->samples.size(), 200u);
+}
+
+TEST(FarthestPointSampling, EveryComponentGetsSamples) {
+  const TriMesh m = test::loadRealMesh("knot2.off");  // two tori
+  ASSERT_EQ(m.topology.components, 2);
+  FpsParams params;
+  params.targetCount = 10;
+  const auto r = farthestPointSampling(m, Metric::uniform(), params);
+  ASSERT_TRUE(r);
+  std::set<int> components;
+  for (int s : r->samples) components.insert(m.topology.componentOfVertex[s]);
+  EXPECT_EQ(components.size(), 2u);
+  for (int v = 0; v < m.vertexCount(); ++v) ASSERT_TRUE(std::isfinite(r->distance[v])) << v;
+}
+
+TEST(FarthestPointSampling, RejectsImpossibleParameters) {
+  const TriMesh m = test::planeGrid(4);
+  FpsParams p;
+  p.targetCount = 1000;
+  EXPECT_EQ(farthestPointSampling(m, Metric::uniform(), p).status().code, StatusCode::InvalidInput);
+  p.targetCount = -1;
+  EXPECT_EQ(farthestPointSampling(m, Metric::uniform(), p).status().code, StatusCode::InvalidInput);
+  p.targetCount = 0;
+  p.minSpacing = 0.0;
+  EXPECT_EQ(farthestPointSampling(m, Metric::uniform(), p).status().code, StatusCode::InvalidInput);
+  p.minSpacing = std::nan("");
+  EXPECT_EQ(farthestPointSampling(m, Metric::uniform(), p).status().code, StatusCode::InvalidInput);
+}
+
+}  // namespace
+}  // namespace gr

@@ -145,7 +145,10 @@ void countTopology(TriMesh& m) {
     roots.clear();
     for (const int* it = m.cornersBegin(v); it != m.cornersEnd(v); ++it) roots.push_back(fans.find(*it));
     std::sort(roots.begin(), roots.end());
-    if (std::unique(roots.begin(), roots.end()) - roots.begin() > 1) ++t.nonManifoldVertices;
+    if (std::unique(roots.begin(), roots.end()) - roots.begin() > 1) {
+      ++t.nonManifoldVertices;
+      t.nonManifoldVertexList.push_back(v);
+    }
   }
 
   // Components over face-connected vertices.

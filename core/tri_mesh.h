@@ -47,6 +47,7 @@ struct Topology {
   int eulerCharacteristic = 0;      ///< V - E + F over the vertices that are in faces
   int genus = 0;                    ///< sum over components of (2 - chi_i - b_i) / 2
   std::vector<int> componentOfVertex;  ///< per vertex, component index; -1 for isolated vertices
+  std::vector<int> nonManifoldVertexList;  ///< the non-manifold vertices, in increasing order
 
   bool isManifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
 };

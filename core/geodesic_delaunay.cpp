@@ -1,0 +1,145 @@
+#include "core/geodesic_delaunay.h"
+
+#include <algorithm>
+#include <array>
+#include <set>
+#include <string>
+
+#include "core/fast_marching.h"
+
+namespace gr {
+namespace {
+
+/// The dual triangles of a labelling, and the cells to repair if it is not a valid mesh with
+/// the given topology.
+struct Dual {
+  std::vector<Tri> triangles;
+  std::vector<int> badCells;
+};
+
+Dual buildDual(const TriMesh& mesh, const std::vector<int>& label, int cellCount) {
+  Dual d;
+  std::set<std::array<int, 3>> seen;  // sorted label triples
+  std::vector<char> bad(cellCount, 0);
+  for (const Tri& t : mesh.triangles) {
+    const int i = label[t[0]], j = label[t[1]], k = label[t[2]];
+    if (i == j || j == k || k == i) continue;
+    std::array<int, 3> key = {i, j, k};
+    std::sort(key.begin(), key.end());
+    if (!seen.insert(key).second) {  // three cells meeting twice
+      bad[i] = bad[j] = bad[k] = 1;
+      continue;
+    }
+    d.triangles.push_back({i, j, k});
+  }
+  for (int c = 0; c < cellCount; ++c)
+    if (bad[c]) d.badCells.push_back(c);
+  return d;
+}
+
+/// Cells at the defects of a dual mesh: edges with one or three-plus triangles (a closed input
+/// must give a closed output) and non-manifold vertices.
+std::vector<int> defectCells(const TriMesh& dual) {
+  std::set<int> cells(dual.topology.nonManifoldVertexList.begin(), dual.topology.nonManifoldVertexList.end());
+  for (int c = 0; c < 3 * dual.faceCount(); ++c)
+    if (dual.oppositeCorner[c] < 0) {
+      cells.insert(dual.vertex(TriMesh::next(c)));
+      cells.insert(dual.vertex(TriMesh::prev(c)));
+    }
+  return {cells.begin(), cells.end()};
+}
+
+}  // namespace
+
+Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> samples,
+                                          const DelaunayParams& params, Progress progress) {
+  if (samples.empty()) return invalidInput("no samples were given");
+  for (int s : samples)
+    if (s < 0 || s >= mesh.vertexCount()) return invalidInput("sample vertex " + std::to_string(s) + " does not exist");
+  if (mesh.topology.nonManifoldEdges > 0 || mesh.topology.nonManifoldVertices > 0)
+    return invalidInput("the mesh is not manifold (" + std::to_string(mesh.topology.nonManifoldEdges) +
+                        " non-manifold edges, " + std::to_string(mesh.topology.nonManifoldVertices) +
+                        " non-manifold vertices)");
+  if (mesh.topology.boundaryEdges > 0)
+    return invalidInput("meshes with boundaries are not supported yet (" +
+                        std::to_string(mesh.topology.boundaryLoops) + " boundary loops)");
+
+  FastMarcher marcher(mesh, metric);
+  std::sort(samples.begin(), samples.end());
+  samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
+  for (size_t i = 0; i < samples.size(); ++i)
+    if (Status s = marcher.addSource(samples[i], static_cast<int>(i)); !s) return s;
+  if (Status s = marcher.propagate(); !s) return s;
+
+  DelaunayResult r;
+  const int initialCount = static_cast<int>(samples.size());
+  for (int round = 0;; ++round) {
+    const std::vector<int>& label = marcher.label();
+    const int cells = static_cast<int>(samples.size());
+    Dual dual = buildDual(mesh, label, cells);
+    std::vector<int> bad = dual.badCells;
+    std::vector<Vec3> positions(cells);
+    for (int c = 0; c < cells; ++c) positions[c] = mesh.positions[samples[c]];
+    // Components without any triangle (one cell covers a whole component) are defects too.
+    Expected<TriMesh> out = dual.triangles.empty() ? Expected<TriMesh>(invalidInput("no triangle"))
+                                                   : buildTriMesh(positions, dual.triangles);
+    if (out) {
+      const Topology& t = out->topology;
+      const std::vector<int> defects = defectCells(*out);
+      bad.insert(bad.end(), defects.begin(), defects.end());
+      const bool sameTopology = t.components == mesh.topology.components && t.genus == mesh.topology.genus &&
+                                t.boundaryLoops == 0 && t.isolatedVertices == 0 && t.inconsistentEdges == 0 &&
+                                t.isManifold();
+      if (bad.empty() && sameTopology) {
+        r.mesh = std::move(out).value();
+        r.sampleVertex = samples;
+        r.region = label;
+        r.addedSamples = cells - initialCount;
+        r.repairRounds = round;
+        return r;
+      }
+      if (bad.empty()) {
+        // Valid locally but not the input's topology (e.g. a handle not captured, a component
+        // with too few cells): refine the cells with the largest distance to their sample.
+        for (int v = 0; v < out->vertexCount(); ++v)
+          if (out->valence(v) == 0) bad.push_back(v);
+        if (bad.empty()) {
+          std::vector<double> far(cells, 0.0);
+          for (int v = 0; v < mesh.vertexCount(); ++v) far[label[v]] = std::max(far[label[v]], marcher.distance()[v]);
+          std::vector<int> order(cells);
+          for (int c = 0; c < cells; ++c) order[c] = c;
+          std::sort(order.begin(), order.end(), [&](int a, int b) { return far[a] > far[b]; });
+          bad.assign(order.begin(), order.begin() + std::max(1, cells / 10));
+        }
+      }
+    } else {
+      for (int c = 0; c < cells; ++c) bad.push_back(c);
+    }
+    if (round >= params.maxRepairRounds)
+      return Status{StatusCode::NotConverged, "the geodesic Delaunay triangulation is still invalid after " +
+                                                  std::to_string(round) + " rounds of sample insertion"};
+    if (!progress.report(double(round + 1) / (params.maxRepairRounds + 1), "Geodesic Delaunay repair"))
+      return cancelled();
+    // New samples: in each bad cell, its vertex farthest from the samples.
+    std::sort(bad.begin(), bad.end());
+    bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+    std::vector<int> farthest(cells, -1);
+    for (int v = 0; v < mesh.vertexCount(); ++v) {
+      const int c = label[v];
+      if (c >= 0 && (farthest[c] < 0 || marcher.distance()[v] > marcher.distance()[farthest[c]])) farthest[c] = v;
+    }
+    int added = 0;
+    for (int c : bad) {
+      const int v = farthest[c];
+      if (v < 0 || marcher.distance()[v] <= 0.0) continue;
+      samples.push_back(v);
+      if (Status s = marcher.addSource(v, static_cast<int>(samples.size()) - 1); !s) return s;
+      ++added;
+    }
+    if (added == 0)
+      return Status{StatusCode::NotConverged, "the geodesic Delaunay triangulation is invalid and no cell can be refined"};
+    if (Status s = marcher.propagate(); !s) return s;
+  }
+}
+
+}  // namespace gr

@@ -1,0 +1,50 @@
+// Geodesic Delaunay triangulation of surface samples, as the dual of their geodesic Voronoi
+// diagram (paper §3.2), with automatic repair until the result is a valid mesh of the input's
+// topology.
+//
+// Each input face whose three vertices lie in three different Voronoi cells (i, j, k) gives the
+// output triangle (i, j, k), oriented like that face:
+//
+//      cell i  \   cell j          input face (a, b, c), labels (i, j, k)
+//               \ /                   -> output triangle (sample i, sample j, sample k)
+//                *   <- three fronts meet
+//                |
+//             cell k
+//
+// The dual is a valid triangulation when the samples are dense enough (closed ball property:
+// every cell a disk, two cells meeting along one arc, three cells at one point). Where it is not
+// (an output edge with three or more triangles, a non-manifold vertex, a triangle twice, a
+// topology other than the input's), the vertex farthest from the samples inside the offending
+// cells becomes a new sample, the Voronoi diagram is updated incrementally, and the dual is
+// rebuilt; the number of added samples is reported.
+// Scope now: meshes without boundary (closed surfaces, any genus, several components).
+// Cost: one incremental front per added sample plus O(F) per round.
+#pragma once
+
+#include <vector>
+
+#include "core/metric.h"
+#include "core/progress.h"
+#include "core/status.h"
+#include "core/tri_mesh.h"
+
+namespace gr {
+
+struct DelaunayParams {
+  int maxRepairRounds = 50;  ///< rounds of sample insertion before giving up (NotConverged)
+};
+
+struct DelaunayResult {
+  TriMesh mesh;                     ///< output: one vertex per sample, at the sample's position
+  std::vector<int> sampleVertex;    ///< per output vertex, the input vertex it sits on
+  int addedSamples = 0;             ///< samples inserted by the repair
+  int repairRounds = 0;
+  std::vector<int> region;          ///< per input vertex, its output vertex (Voronoi cell)
+};
+
+/// Fails with InvalidInput (no samples, a sample out of range, a mesh with boundary or
+/// non-manifold edges), NotConverged (still invalid after maxRepairRounds) or Cancelled.
+Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> samples,
+                                          const DelaunayParams& params = {}, Progress progress = {});
+
+}  // namespace gr

@@ -1,0 +1,144 @@
+// Geodesic Delaunay triangulation of farthest-point samples (paper §3.1-3.2): the output must
+// be an edge- and vertex-manifold, consistently oriented closed mesh with the input's components
+// and genus. Topology is recounted here, independently of TriMesh.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numeric>
+#include <set>
+
+#include "core/farthest_point_sampling.h"
+#include "core/geodesic_delaunay.h"
+#include "tests/test_support.h"
+
+namespace gr {
+namespace {
+
+struct Recount {
+  bool closedManifoldEdges = true;  ///< every edge in exactly two faces
+  bool oriented = true;             ///< every directed edge once
+  bool manifoldVertices = true;     ///< every vertex's link is one cycle
+  int components = 0;
+  int genusSum = 0;
+  int isolated = 0;
+};
+
+Recount recount(const std::vector<Tri>& tris, int nv) {
+  Recount r;
+  std::map<std::pair<int, int>, int> undirected, directed;
+  for (const Tri& t : tris)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      ++undirected[std::minmax(a, b)];
+      if (++directed[{a, b}] > 1) r.oriented = false;
+    }
+  for (const auto& [e, n] : undirected)
+    if (n != 2) r.closedManifoldEdges = false;
+  // Link of each vertex: the edges opposite to it; one cycle <=> connected with all degrees 2.
+  std::vector<std::vector<std::pair<int, int>>> link(nv);
+  for (const Tri& t : tris)
+    for (int k = 0; k < 3; ++k) link[t[k]].push_back({t[(k + 1) % 3], t[(k + 2) % 3]});
+  for (int v = 0; v < nv; ++v) {
+    if (link[v].empty()) {
+      ++r.isolated;
+      continue;
+    }
+    std::map<int, std::vector<int>> adj;
+    for (const auto& [a, b] : link[v]) {
+      adj[a].push_back(b);
+      adj[b].push_back(a);
+    }
+    bool ok = true;
+    for (const auto& [a, n] : adj) ok = ok && n.size() == 2;
+    std::set<int> seen = {adj.begin()->first};
+    std::vector<int> stack = {adj.begin()->first};
+    while (!stack.empty()) {
+      const int a = stack.back();
+      stack.pop_back();
+      for (int b : adj[a])
+        if (seen.insert(b).second) stack.push_back(b);
+    }
+    if (!ok || seen.size() != adj.size()) r.manifoldVertices = false;
+  }
+  // Components (union-find over faces' vertices) and genus from chi = V - E + F = 2 - 2g.
+  std::vector<int> parent(nv);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const Tri& t : tris) {
+    parent[find(t[0])] = find(t[1]);
+    parent[find(t[1])] = find(t[2]);
+  }
+  std::map<int, long> chi;
+  for (int v = 0; v < nv; ++v)
+    if (!link[v].empty()) ++chi[find(v)];
+  for (const auto& [e, n] : undirected) chi[find(e.first)] -= 1;
+  for (const Tri& t : tris) chi[find(t[0])] += 1;
+  r.components = static_cast<int>(chi.size());
+  for (const auto& [root, c] : chi) r.genusSum += static_cast<int>((2 - c) / 2);
+  return r;
+}
+
+class DelaunayOnClosedMeshes : public ::testing::TestWithParam<std::tuple<std::string, double>> {};
+
+TEST_P(DelaunayOnClosedMeshes, ManifoldOrientedSameTopology) {
+  const auto& [name, fraction] = GetParam();
+  const TriMesh m = test::loadRealMesh(name);
+  const Recount input = recount(m.triangles, m.vertexCount());
+  ASSERT_TRUE(input.closedManifoldEdges && input.manifoldVertices);
+  FpsParams fps;
+  fps.targetCount = std::max(4, static_cast<int>(fraction * m.vertexCount()));
+  const auto samples = farthestPointSampling(m, Metric::uniform(), fps);
+  ASSERT_TRUE(samples);
+  const auto r = geodesicDelaunay(m, Metric::uniform(), samples->samples);
+  ASSERT_TRUE(r) << r.status().message;
+  const Recount out = recount(r->mesh.triangles, r->mesh.vertexCount());
+  std::printf("%-14s %2.0f%%: %d samples + %d added in %d rounds -> %d vertices, %d faces; components %d/%d, genus %d/%d\n",
+              name.c_str(), 100 * fraction, fps.targetCount, r->addedSamples, r->repairRounds, r->mesh.vertexCount(),
+              r->mesh.faceCount(), out.components, input.components, out.genusSum, input.genusSum);
+  EXPECT_EQ(r->mesh.vertexCount(), fps.targetCount + r->addedSamples);
+  EXPECT_TRUE(out.closedManifoldEdges);
+  EXPECT_TRUE(out.oriented);
+  EXPECT_TRUE(out.manifoldVertices);
+  EXPECT_EQ(out.isolated, 0);
+  EXPECT_EQ(out.components, input.components);
+  EXPECT_EQ(out.genusSum, input.genusSum);
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, DelaunayOnClosedMeshes,
+                         ::testing::Combine(::testing::Values("fandisk.off", "bunny00.off", "armadillo.off", "knot2.off",
+                                                              "elephant.off"),
+                                            ::testing::Values(0.1, 0.3)),
+                         [](const ::testing::TestParamInfo<std::tuple<std::string, double>>& p) {
+                           const std::string n = std::get<0>(p.param);
+                           return n.substr(0, n.find('.')) + "_" + std::to_string(int(100 * std::get<1>(p.param)));
+                         });
+
+TEST(Delaunay, VerySparseSamplesAreRepaired) {
+  const TriMesh m = test::loadRealMesh("bunny00.off");
+  FpsParams fps;
+  fps.targetCount = 50;
+  const auto samples = farthestPointSampling(m, Metric::uniform(), fps);
+  const auto r = geodesicDelaunay(m, Metric::uniform(), samples->samples);
+  ASSERT_TRUE(r) << r.status().message;
+  const Recount out = recount(r->mesh.triangles, r->mesh.vertexCount());
+  std::printf("bunny00, 50 samples: %d added -> %d vertices\n", r->addedSamples, r->mesh.vertexCount());
+  EXPECT_TRUE(out.closedManifoldEdges && out.oriented && out.manifoldVertices);
+  EXPECT_EQ(out.components, 1);
+  EXPECT_EQ(out.genusSum, 0);
+}
+
+TEST(Delaunay, RejectsBadInput) {
+  const TriMesh m = test::loadRealMesh("mech-holes-shark.off");
+  EXPECT_EQ(geodesicDelaunay(m, Metric::uniform(), {0, 1, 2}).status().code, StatusCode::InvalidInput);
+  const TriMesh f = test::loadRealMesh("fandisk.off");
+  EXPECT_EQ(geodesicDelaunay(f, Metric::uniform(), {}).status().code, StatusCode::InvalidInput);
+  EXPECT_EQ(geodesicDelaunay(f, Metric::uniform(), {-3}).status().code, StatusCode::InvalidInput);
+}
+
+}  // namespace
+}  // namespace gr

@@ -26,4 +26,30 @@ DistanceError distanceError(const std::vector<double>& d, const std::vector<doub
   return e;
 }
 
+AngleStatistics angleStatistics(const TriMesh& mesh) {
+  AngleStatistics a;
+  if (mesh.faceCount() == 0) return a;
+  double sumSq = 0.0;
+  int below30 = 0;
+  for (const Tri& t : mesh.triangles) {
+    double smallest = 180.0;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 u = mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]];
+      const Vec3 w = mesh.positions[t[(k + 2) % 3]] - mesh.positions[t[k]];
+      const double nu = u.norm(), nw = w.norm();
+      double angle = 0.0;
+      if (nu > 0.0 && nw > 0.0) angle = std::acos(std::clamp(u.dot(w) / (nu * nw), -1.0, 1.0)) * 180.0 / M_PI;
+      else if (nu > 0.0 || nw > 0.0) angle = 0.0;
+      sumSq += (angle - 60.0) * (angle - 60.0);
+      smallest = std::min(smallest, angle);
+      a.maxDegrees = std::max(a.maxDegrees, angle);
+    }
+    a.minDegrees = std::min(a.minDegrees, smallest);
+    below30 += smallest < 30.0;
+  }
+  a.stdDegrees = std::sqrt(sumSq / (3.0 * mesh.faceCount()));
+  a.shareMinBelow30 = double(below30) / mesh.faceCount();
+  return a;
+}
+
 }  // namespace gr

@@ -3,6 +3,8 @@
 
 #include <vector>
 
+#include "core/tri_mesh.h"
+
 namespace gr {
 
 /// Error of a distance field d against a reference field (e.g. exact geodesics).
@@ -16,5 +18,17 @@ struct DistanceError {
 
 /// Vertices where either field is not finite are skipped.
 DistanceError distanceError(const std::vector<double>& d, const std::vector<double>& reference);
+
+/// Triangle quality as the project measures it (the mean angle is always 60 degrees, so it is
+/// not reported): spread of all angles, the smallest angle, and the share of triangles whose
+/// smallest angle is under 30 degrees. Zero-area faces count with angles 0, 0, 180.
+struct AngleStatistics {
+  double stdDegrees = 0.0;          ///< standard deviation of all triangle angles
+  double minDegrees = 180.0;        ///< smallest angle of any triangle
+  double maxDegrees = 0.0;          ///< largest angle of any triangle
+  double shareMinBelow30 = 0.0;     ///< fraction of triangles with an angle under 30 degrees
+};
+
+AngleStatistics angleStatistics(const TriMesh& mesh);
 
 }  // namespace gr

@@ -9,6 +9,7 @@
 #include <numeric>
 #include <set>
 
+#include "core/evaluation.h"
 #include "core/farthest_point_sampling.h"
 #include "core/geodesic_delaunay.h"
 #include "tests/test_support.h"
@@ -100,6 +101,11 @@ TEST_P(DelaunayOnClosedMeshes, ManifoldOrientedSameTopology) {
   std::printf("%-14s %2.0f%%: %d samples + %d added in %d rounds -> %d vertices, %d faces; components %d/%d, genus %d/%d\n",
               name.c_str(), 100 * fraction, fps.targetCount, r->addedSamples, r->repairRounds, r->mesh.vertexCount(),
               r->mesh.faceCount(), out.components, input.components, out.genusSum, input.genusSum);
+  const AngleStatistics in = angleStatistics(m), q = angleStatistics(r->mesh);
+  std::printf("%-14s %2.0f%%: angles std %.1f deg (input %.1f), min %.1f deg (input %.1f), min angle < 30 deg: %.2f %% of "
+              "triangles (input %.2f %%)\n",
+              name.c_str(), 100 * fraction, q.stdDegrees, in.stdDegrees, q.minDegrees, in.minDegrees,
+              100 * q.shareMinBelow30, 100 * in.shareMinBelow30);
   EXPECT_EQ(r->mesh.vertexCount(), fps.targetCount + r->addedSamples);
   EXPECT_TRUE(out.closedManifoldEdges);
   EXPECT_TRUE(out.oriented);

@@ -3,6 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include <vcg/complex/algorithms/closest.h>
+#include <vcg/space/index/grid_static_ptr.h>
+
+#include "core/vcg_mesh.h"
+
 namespace gr {
 
 DistanceError distanceError(const std::vector<double>& d, const std::vector<double>& reference) {
@@ -50,6 +55,38 @@ AngleStatistics angleStatistics(const TriMesh& mesh) {
   a.stdDegrees = std::sqrt(sumSq / (3.0 * mesh.faceCount()));
   a.shareMinBelow30 = double(below30) / mesh.faceCount();
   return a;
+}
+
+SurfaceDistance surfaceDistance(const TriMesh& from, const TriMesh& to) {
+  SurfaceDistance d;
+  if (from.vertexCount() == 0 || to.faceCount() == 0) return d;
+  CoreMesh target;
+  toCoreMesh(to, target);
+  vcg::GridStaticPtr<CoreFace, double> grid;
+  grid.Set(target.face.begin(), target.face.end());
+  vcg::face::PointDistanceBaseFunctor<double> pointToFace;
+  vcg::tri::EmptyTMark<CoreMesh> marker;
+  const double searchRadius = 2.0 * (to.boundingBoxDiagonal() + from.boundingBoxDiagonal());
+  double sumSq = 0.0;
+  long n = 0;
+  auto sample = [&](const Vec3& p) {
+    double dist = searchRadius;
+    vcg::Point3d closest;
+    grid.GetClosest(pointToFace, marker, vcg::Point3d(p.x(), p.y(), p.z()), searchRadius, dist, closest);
+    d.max = std::max(d.max, dist);
+    sumSq += dist * dist;
+    ++n;
+  };
+  for (const Vec3& p : from.positions) sample(p);
+  for (const Tri& t : from.triangles) {
+    const Vec3 &a = from.positions[t[0]], &b = from.positions[t[1]], &c = from.positions[t[2]];
+    sample((a + b + c) / 3.0);
+    sample(0.5 * (a + b));
+    sample(0.5 * (b + c));
+    sample(0.5 * (c + a));
+  }
+  d.rms = std::sqrt(sumSq / n);
+  return d;
 }
 
 }  // namespace gr

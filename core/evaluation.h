@@ -31,4 +31,12 @@ struct AngleStatistics {
 
 AngleStatistics angleStatistics(const TriMesh& mesh);
 
+/// Distance from the surface `from` to the surface `to`, sampled at the vertices, edge midpoints
+/// and face centroids of `from` (each to its nearest point of `to`, found with vcglib's grid).
+struct SurfaceDistance {
+  double max = 0.0;  ///< one-sided Hausdorff distance
+  double rms = 0.0;  ///< root mean square over the samples
+};
+SurfaceDistance surfaceDistance(const TriMesh& from, const TriMesh& to);
+
 }  // namespace gr

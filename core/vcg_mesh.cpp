@@ -3,6 +3,8 @@
 #include <wrap/io_trimesh/export.h>
 #include <wrap/io_trimesh/import.h>
 
+#include <vcg/complex/algorithms/update/normal.h>
+
 #include "core/vcg_convert.h"
 
 namespace gr {
@@ -34,6 +36,18 @@ Expected<TriMesh> loadTriMesh(const std::string& path) {
   CoreMesh m;
   if (Status s = loadMesh(path, m); !s) return s;
   return toTriMesh(m);
+}
+
+void toCoreMesh(const TriMesh& mesh, CoreMesh& m) {
+  m.Clear();
+  auto vi = vcg::tri::Allocator<CoreMesh>::AddVertices(m, mesh.vertexCount());
+  for (const Vec3& p : mesh.positions) (vi++)->P() = vcg::Point3d(p.x(), p.y(), p.z());
+  auto fi = vcg::tri::Allocator<CoreMesh>::AddFaces(m, mesh.faceCount());
+  for (const Tri& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t[k]];
+    ++fi;
+  }
+  vcg::tri::UpdateNormal<CoreMesh>::PerFaceNormalized(m);
 }
 
 }  // namespace gr

@@ -36,5 +36,7 @@ Status loadMesh(const std::string& path, CoreMesh& m, LoadedAttributes* attribut
 Status saveMesh(const CoreMesh& m, const std::string& path, bool withQuality = false, bool withColor = false);
 /// Loads a file straight into a TriMesh.
 Expected<TriMesh> loadTriMesh(const std::string& path);
+/// Copies a TriMesh into `m` (cleared first), with per-face normals.
+void toCoreMesh(const TriMesh& mesh, CoreMesh& m);
 
 }  // namespace gr

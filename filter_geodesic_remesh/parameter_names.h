@@ -9,3 +9,13 @@ constexpr const char* kMaxDistance = "MaxDistance";
 constexpr const char* kColorBy = "ColorBy";
 
 }  // namespace gr::filters::param
+
+namespace gr::filters::param {
+
+// Remeshing: Geodesic Uniform
+constexpr const char* kTargetVertices = "TargetVertices";
+constexpr const char* kSpacing = "Spacing";
+constexpr const char* kSeed = "Seed";
+constexpr const char* kLabelInput = "LabelInput";
+
+}  // namespace gr::filters::param

@@ -68,9 +68,13 @@ class FilterInProcess : public ::testing::Test {
 
   void SetUp() override {
     plugin.setLog(&log);
+    use("Geodesic Distance: Fast Marching from Selected Vertices");
+  }
+  void use(const char* filterName) {
+    action = nullptr;
     for (QAction* a : plugin.actions())
-      if (a->text() == "Geodesic Distance: Fast Marching from Selected Vertices") action = a;
-    ASSERT_NE(action, nullptr);
+      if (a->text() == filterName) action = a;
+    ASSERT_NE(action, nullptr) << filterName;
   }
   void declare(MeshModel& mm) {
     params = RichParameterList();
@@ -220,6 +224,62 @@ TEST_F(FilterInProcess, ImpossibleParameters) {
   declare(*mm);
   params.setValue(filters::param::kColorBy, EnumValue(7));
   expectCleanFailure(*mm, "ColorBy must be 0");
+}
+
+TEST_F(FilterInProcess, UniformRemeshMakesANewLayerAndKeepsTheInput) {
+  use("Remeshing: Geodesic Uniform");
+  const TriMesh knot = test::loadRealMesh("knot2.off");  // two tori
+  MeshModel* mm = addMesh(doc, knot.positions, knot.triangles);
+  for (auto& v : mm->cm.vert) v.C() = vcg::Color4b(200, 10, 10, 255);
+  mm->updateDataMask(MeshModel::MM_VERTCOLOR);
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(400));
+  const Snapshot before(*mm);
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_TRUE(Snapshot(*mm) == before) << "the input layer changed";
+  ASSERT_EQ(doc.meshList.size(), 2);
+  MeshModel* out = doc.mm();
+  ASSERT_NE(out, mm);
+  std::vector<Vec3> pos;
+  for (const auto& v : out->cm.vert) pos.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
+  std::vector<Tri> tris;
+  for (const auto& f : out->cm.face)
+    tris.push_back({int(f.cV(0) - &out->cm.vert[0]), int(f.cV(1) - &out->cm.vert[0]), int(f.cV(2) - &out->cm.vert[0])});
+  const auto result = buildTriMesh(pos, tris);
+  ASSERT_TRUE(result);
+  EXPECT_GE(result->vertexCount(), 400);
+  EXPECT_EQ(result->topology.components, 2);
+  EXPECT_EQ(result->topology.genus, 2);
+  EXPECT_EQ(result->topology.boundaryEdges, 0);
+  EXPECT_TRUE(result->topology.isManifold());
+  EXPECT_EQ(result->topology.inconsistentEdges, 0);
+  // Colours carried from the input vertices.
+  EXPECT_TRUE(out->hasDataMask(MeshModel::MM_VERTCOLOR));
+  EXPECT_EQ(out->cm.vert[0].C(), vcg::Color4b(200, 10, 10, 255));
+  EXPECT_NE(logText().find("added to make the triangulation valid"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("Hausdorff distance"), std::string::npos) << logText();
+}
+
+TEST_F(FilterInProcess, UniformRemeshBadInputLeavesTheDocumentAlone) {
+  use("Remeshing: Geodesic Uniform");
+  const TriMesh shark = test::loadRealMesh("mech-holes-shark.off");  // has boundaries
+  MeshModel* mm = addMesh(doc, shark.positions, shark.triangles);
+  declare(*mm);
+  expectCleanFailure(*mm, "boundary loops");
+  EXPECT_EQ(doc.meshList.size(), 1) << "a failed filter added a layer";
+  const TriMesh grid = test::planeGrid(4);
+  MeshModel* cloud = addMesh(doc, grid.positions, {});
+  declare(*cloud);
+  expectCleanFailure(*cloud, "the mesh has no faces");
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* f = addMesh(doc, fandisk.positions, fandisk.triangles);
+  declare(*f);
+  params.setValue(filters::param::kTargetVertices, IntValue(100000));
+  expectCleanFailure(*f, "cannot place 100000 samples");
+  declare(*f);
+  params.setValue(filters::param::kTargetVertices, IntValue(0));
+  params.setValue(filters::param::kSpacing, AbsPercValue(0.0f));
+  expectCleanFailure(*f, "TargetVertices is 0 and Spacing is not > 0");
 }
 
 }  // namespace

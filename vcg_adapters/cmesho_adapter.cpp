@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
+
 namespace gr::adapters {
 
 Expected<CoreView> toCore(const CMeshO& m) {
@@ -47,6 +50,28 @@ void colorByLabel(CMeshO& m, const CoreView& view, const std::vector<int>& label
   for (int v = 0; v < view.mesh.vertexCount(); ++v)
     m.vert[view.map.vcgOfCoreVertex[v]].C() =
         labels[v] < 0 ? missingColor : vcg::Color4b::Scatter(std::max(labelCount, 1), labels[v]);
+}
+
+void writeMesh(const TriMesh& mesh, CMeshO& out, const CMeshO& in, const CoreView& view,
+               const std::vector<int>& inputVertexOf, bool copyColor, bool copyQuality) {
+  out.Clear();
+  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(out, mesh.vertexCount());
+  for (int v = 0; v < mesh.vertexCount(); ++v, ++vi) {
+    const Vec3& p = mesh.positions[v];
+    vi->P() = CMeshO::CoordType(Scalarm(p.x()), Scalarm(p.y()), Scalarm(p.z()));
+    const CVertexO& source = in.vert[view.map.vcgOfCoreVertex[inputVertexOf[v]]];
+    if (copyColor) vi->C() = source.cC();
+    if (copyQuality) vi->Q() = source.cQ();
+  }
+  if (mesh.faceCount() > 0) {
+    auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(out, mesh.faceCount());
+    for (const Tri& t : mesh.triangles) {
+      for (int k = 0; k < 3; ++k) fi->V(k) = &out.vert[t[k]];
+      ++fi;
+    }
+  }
+  vcg::tri::UpdateBounding<CMeshO>::Box(out);
+  vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFaceNormalized(out);
 }
 
 }  // namespace gr::adapters

@@ -43,4 +43,10 @@ void colorByRamp(CMeshO& m, const CoreView& view, const std::vector<double>& val
 void colorByLabel(CMeshO& m, const CoreView& view, const std::vector<int>& labels, int labelCount,
                   vcg::Color4b missingColor = vcg::Color4b::LightGray);
 
+/// Fills `out` (cleared first) with a core mesh; vertex i of `mesh` becomes vertex i of `out`.
+/// Colour and quality of output vertex i are copied from input vertex inputVertexOf[i] of `in`
+/// (a core index of `view`) when copyColor / copyQuality are set.
+void writeMesh(const TriMesh& mesh, CMeshO& out, const CMeshO& in, const CoreView& view,
+               const std::vector<int>& inputVertexOf, bool copyColor, bool copyQuality);
+
 }  // namespace gr::adapters

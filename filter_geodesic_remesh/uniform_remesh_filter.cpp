@@ -1,0 +1,112 @@
+#include "filter_geodesic_remesh/uniform_remesh_filter.h"
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "core/evaluation.h"
+#include "core/farthest_point_sampling.h"
+#include "core/geodesic_delaunay.h"
+#include "filter_geodesic_remesh/parameter_names.h"
+#include "vcg_adapters/cmesho_adapter.h"
+
+namespace gr::filters {
+namespace {
+
+std::string fmt(double x, const char* spec = "%.4g") {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, spec, x);
+  return buf;
+}
+
+}  // namespace
+
+void declareUniformRemesh(const MeshModel& mesh, RichParameterList& params) {
+  const float diag = mesh.cm.bbox.IsNull() ? 1.0f : mesh.cm.bbox.Diag();
+  const FpsParams defaults;
+  params.addParam(RichInt(param::kTargetVertices, std::max(4, mesh.cm.vn / 10), "Target vertices",
+                          "Number of vertices of the new mesh (default: 10% of the input). The repair of the "
+                          "geodesic Delaunay triangulation may add a few; the log says how many. 0 = use Spacing."));
+  params.addParam(RichAbsPerc(param::kSpacing, 0.02f * diag, 0.0f, diag, "Spacing",
+                              "Used when Target vertices is 0: sample until every point of the surface is closer "
+                              "than this geodesic distance to a sample (mesh units or % of the bounding-box "
+                              "diagonal; default 2%)."));
+  params.addParam(RichInt(param::kSeed, int(defaults.seed), "Seed",
+                          "Picks the start of the farthest-point sampling: the same seed gives the same mesh "
+                          "(default 0)."));
+  params.addParam(RichBool(param::kLabelInput, false, "Label input",
+                           "Also write into the input mesh each vertex's Voronoi cell (the output vertex it belongs "
+                           "to) as vertex quality, and color it by cell (default false: the input is not changed)."));
+}
+
+Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, FilterContext& ctx) {
+  const auto start = std::chrono::steady_clock::now();
+  MeshModel* mm = doc.mm();
+  if (mm == nullptr) return invalidInput("there is no mesh to work on");
+  CMeshO& m = mm->cm;
+
+  // Compute, with no change to the document...
+  Expected<adapters::CoreView> view = adapters::toCore(m);
+  if (!view) return view.status();
+  const TriMesh& mesh = view->mesh;
+  const Topology& topology = mesh.topology;
+  if (!topology.isManifold())
+    return nonManifold("the mesh has " + std::to_string(topology.nonManifoldEdges) + " non-manifold edges and " +
+                       std::to_string(topology.nonManifoldVertices) +
+                       " non-manifold vertices; repair them first (Cleaning and Repairing menu)");
+  if (topology.boundaryEdges > 0)
+    return invalidInput("the mesh has " + std::to_string(topology.boundaryLoops) +
+                        " boundary loops; this version remeshes closed surfaces only (boundaries are planned)");
+  FpsParams fps;
+  fps.targetCount = params.getInt(param::kTargetVertices);
+  fps.minSpacing = fps.targetCount > 0 ? 0.0 : params.getAbsPerc(param::kSpacing);
+  fps.seed = static_cast<unsigned>(params.getInt(param::kSeed));
+  if (fps.targetCount < 0) return invalidInput("TargetVertices must be >= 0, got " + std::to_string(fps.targetCount));
+  if (fps.targetCount == 0 && !(fps.minSpacing > 0.0))
+    return invalidInput("TargetVertices is 0 and Spacing is not > 0: give one of them");
+  const bool labelInput = params.getBool(param::kLabelInput);
+
+  Expected<FpsResult> samples = farthestPointSampling(mesh, Metric::uniform(), fps, ctx.progress.sub(0.0, 0.6));
+  if (!samples) return samples.status();
+  Expected<DelaunayResult> result =
+      geodesicDelaunay(mesh, Metric::uniform(), samples->samples, {}, ctx.progress.sub(0.6, 0.9));
+  if (!result) return result.status();
+  const AngleStatistics angles = angleStatistics(result->mesh);
+  const SurfaceDistance hausdorff = surfaceDistance(result->mesh, mesh);
+  const double diag = mesh.boundingBoxDiagonal();
+
+  // ...then commit: a new layer, and the input's labels only if asked.
+  const bool copyColor = mm->hasDataMask(MeshModel::MM_VERTCOLOR);
+  const bool copyQuality = mm->hasDataMask(MeshModel::MM_VERTQUALITY);
+  const QString label = mm->label() + " - geodesic remesh";
+  MeshModel* out = doc.addNewMesh("", label, true);
+  if (copyColor) out->updateDataMask(MeshModel::MM_VERTCOLOR);
+  if (copyQuality) out->updateDataMask(MeshModel::MM_VERTQUALITY);
+  adapters::writeMesh(result->mesh, out->cm, m, *view, result->sampleVertex, copyColor, copyQuality);
+  if (labelInput) {
+    std::vector<double> region(result->region.begin(), result->region.end());
+    adapters::writeVertexQuality(m, *view, region, -1.0);
+    adapters::colorByLabel(m, *view, result->region, result->mesh.vertexCount());
+    mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
+  }
+
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  ctx.log("Geodesic uniform remeshing of " + std::to_string(mesh.vertexCount()) + " vertices, " +
+          std::to_string(mesh.faceCount()) + " faces: " + std::to_string(result->mesh.vertexCount()) + " vertices, " +
+          std::to_string(result->mesh.faceCount()) + " faces on the new layer '" + label.toStdString() + "'");
+  ctx.log("Samples: " + std::to_string(samples->samples.size()) + " by farthest-point sampling, " +
+          std::to_string(result->addedSamples) + " added to make the triangulation valid (" +
+          std::to_string(result->repairRounds) + " rounds); covering radius " + fmt(samples->coveringRadius));
+  ctx.log("Topology kept: " + std::to_string(result->mesh.topology.components) + " components, genus " +
+          std::to_string(result->mesh.topology.genus));
+  ctx.log("Angles: standard deviation " + fmt(angles.stdDegrees, "%.1f") + " deg, smallest " +
+          fmt(angles.minDegrees, "%.1f") + " deg, " + fmt(100 * angles.shareMinBelow30, "%.2f") +
+          " % of triangles with an angle under 30 deg");
+  ctx.log("Hausdorff distance to the input (one-sided): " + fmt(100 * hausdorff.max / diag, "%.3f") +
+          " % of the bounding-box diagonal, RMS " + fmt(100 * hausdorff.rms / diag, "%.3f") + " %");
+  ctx.log("Time: " + fmt(ms) + " ms");
+  return Status::ok();
+}
+
+}  // namespace gr::filters

@@ -31,6 +31,11 @@ Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& met
                         std::to_string(usable) + " vertices");
   if (!metric.isUniform() && static_cast<int>(metric.P.size()) != mesh.vertexCount())
     return invalidInput("the metric does not have one value per vertex");
+  if (!(params.boundaryPriority >= 1.0) || !std::isfinite(params.boundaryPriority))
+    return invalidInput("the boundary priority must be finite and >= 1");
+  std::vector<char> onBoundary(mesh.vertexCount(), 0);
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
+    if (mesh.oppositeCorner[c] == kBoundary) onBoundary[mesh.vertex(TriMesh::next(c))] = onBoundary[mesh.vertex(TriMesh::prev(c))] = 1;
 
   FastMarcher marcher(mesh, metric);
   // Start: the vertex farthest from a seeded vertex of a face.
@@ -55,7 +60,10 @@ Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& met
 
   FpsResult r;
   const std::vector<double>& U = marcher.distance();
-  std::priority_queue<Farthest> farthest;
+  std::priority_queue<Farthest> farthest, farthestOnBoundary;  // interior / boundary vertices
+  const auto clean = [&U](std::priority_queue<Farthest>& heap) {  // drop stale entries
+    while (!heap.empty() && heap.top().u != U[heap.top().v]) heap.pop();
+  };
   const int cap = params.targetCount > 0 ? params.targetCount : usable;
   int next = first;
   double nextU = kUnreached;
@@ -64,7 +72,7 @@ Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& met
     r.insertionDistance.push_back(nextU);
     if (Status s = marcher.addSource(next, static_cast<int>(r.samples.size()) - 1); !s) return s;
     if (Status s = marcher.propagate(); !s) return s;
-    for (int v : marcher.acceptedOrder()) farthest.push({U[v], v});
+    for (int v : marcher.acceptedOrder()) (onBoundary[v] ? farthestOnBoundary : farthest).push({U[v], v});
     if (static_cast<int>(r.samples.size()) >= cap) break;
     if (!progress.report(double(r.samples.size()) / cap, "Farthest point sampling")) return cancelled();
     if (!pending.empty()) {
@@ -73,14 +81,20 @@ Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& met
       nextU = kUnreached;
       continue;
     }
-    while (!farthest.empty() && farthest.top().u != U[farthest.top().v]) farthest.pop();  // stale
-    if (farthest.empty() || farthest.top().u <= 0.0) break;  // every vertex is a sample
-    next = farthest.top().v;
-    nextU = farthest.top().u;
-    if (params.minSpacing > 0.0 && nextU < params.minSpacing) break;
+    clean(farthest);
+    clean(farthestOnBoundary);
+    const double interiorU = farthest.empty() ? 0.0 : farthest.top().u;
+    const double boundaryU = farthestOnBoundary.empty() ? 0.0 : farthestOnBoundary.top().u;
+    if (std::max(interiorU, boundaryU) <= 0.0) break;  // every vertex is a sample
+    if (params.minSpacing > 0.0 && std::max(interiorU, boundaryU) < params.minSpacing) break;
+    const bool boundaryFirst = boundaryU > 0.0 && boundaryU * params.boundaryPriority >= interiorU;
+    next = boundaryFirst ? farthestOnBoundary.top().v : farthest.top().v;
+    nextU = boundaryFirst ? boundaryU : interiorU;
   }
-  while (!farthest.empty() && farthest.top().u != U[farthest.top().v]) farthest.pop();
-  r.coveringRadius = farthest.empty() ? 0.0 : farthest.top().u;
+  clean(farthest);
+  clean(farthestOnBoundary);
+  r.coveringRadius = std::max(farthest.empty() ? 0.0 : farthest.top().u,
+                              farthestOnBoundary.empty() ? 0.0 : farthestOnBoundary.top().u);
   r.distance = U;
   r.region = marcher.label();
   return r;

@@ -6,7 +6,8 @@
 // improves (FastMarcher). The maximum is tracked in a max-heap fed with the vertices each step
 // changed, so no step scans all vertices. A component with no sample yet is infinitely far: each
 // other component gets its lowest-numbered vertex as first sample before any component gets a
-// second one.
+// second one. On a mesh with boundaries, boundary vertices take precedence (boundaryPriority),
+// so each loop is sampled before the interior near it.
 // Cost: O(sum of improved regions * log) - about O(V log V log n) for n samples (paper Table 2).
 #pragma once
 
@@ -24,6 +25,9 @@ struct FpsParams {
   int targetCount = 1000;   ///< stop after this many samples (>= 1); 0 = stop on spacing only
   double minSpacing = 0.0;  ///< also stop when the farthest distance is below this (mesh units); 0 = off
   unsigned seed = 0;        ///< picks the start vertex: the same seed gives the same samples
+  /// Boundary vertices count as this much farther than they are (>= 1), so boundary loops are
+  /// sampled first and about 1/boundaryPriority times the interior spacing apart; 1 = no priority.
+  double boundaryPriority = 1.5;
 };
 
 struct FpsResult {

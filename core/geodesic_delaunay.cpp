@@ -37,15 +37,19 @@ Dual buildDual(const TriMesh& mesh, const std::vector<int>& label, int cellCount
   return d;
 }
 
-/// Cells at the defects of a dual mesh: edges with one or three-plus triangles (a closed input
-/// must give a closed output) and non-manifold vertices.
-std::vector<int> defectCells(const TriMesh& dual) {
+/// Cells at the defects of a dual mesh: non-manifold edges and vertices, and boundary edges that
+/// do not join two samples lying on the input's boundary (a closed part of the input must give
+/// a closed part of the output, and output boundaries must follow input boundaries).
+std::vector<int> defectCells(const TriMesh& dual, const std::vector<char>& sampleOnBoundary) {
   std::set<int> cells(dual.topology.nonManifoldVertexList.begin(), dual.topology.nonManifoldVertexList.end());
-  for (int c = 0; c < 3 * dual.faceCount(); ++c)
-    if (dual.oppositeCorner[c] < 0) {
-      cells.insert(dual.vertex(TriMesh::next(c)));
-      cells.insert(dual.vertex(TriMesh::prev(c)));
+  for (int c = 0; c < 3 * dual.faceCount(); ++c) {
+    const int o = dual.oppositeCorner[c];
+    const int a = dual.vertex(TriMesh::next(c)), b = dual.vertex(TriMesh::prev(c));
+    if (o == kNonManifold || (o == kBoundary && !(sampleOnBoundary[a] && sampleOnBoundary[b]))) {
+      cells.insert(a);
+      cells.insert(b);
     }
+  }
   return {cells.begin(), cells.end()};
 }
 
@@ -60,9 +64,9 @@ Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& met
     return invalidInput("the mesh is not manifold (" + std::to_string(mesh.topology.nonManifoldEdges) +
                         " non-manifold edges, " + std::to_string(mesh.topology.nonManifoldVertices) +
                         " non-manifold vertices)");
-  if (mesh.topology.boundaryEdges > 0)
-    return invalidInput("meshes with boundaries are not supported yet (" +
-                        std::to_string(mesh.topology.boundaryLoops) + " boundary loops)");
+  std::vector<char> onBoundary(mesh.vertexCount(), 0);
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
+    if (mesh.oppositeCorner[c] == kBoundary) onBoundary[mesh.vertex(TriMesh::next(c))] = onBoundary[mesh.vertex(TriMesh::prev(c))] = 1;
 
   FastMarcher marcher(mesh, metric);
   std::sort(samples.begin(), samples.end());
@@ -83,13 +87,21 @@ Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& met
     // Components without any triangle (one cell covers a whole component) are defects too.
     Expected<TriMesh> out = dual.triangles.empty() ? Expected<TriMesh>(invalidInput("no triangle"))
                                                    : buildTriMesh(positions, dual.triangles);
+    // A cell that reaches the input's boundary must have its sample on it, or the output's
+    // boundary would cut across the surface.
+    std::vector<char> sampleOnBoundary(cells, 0), cellOnBoundary(cells, 0);
+    for (int c = 0; c < cells; ++c) sampleOnBoundary[c] = onBoundary[samples[c]];
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+      if (onBoundary[v] && label[v] >= 0) cellOnBoundary[label[v]] = 1;
+    for (int c = 0; c < cells; ++c)
+      if (cellOnBoundary[c] && !sampleOnBoundary[c]) bad.push_back(c);
     if (out) {
       const Topology& t = out->topology;
-      const std::vector<int> defects = defectCells(*out);
+      const std::vector<int> defects = defectCells(*out, sampleOnBoundary);
       bad.insert(bad.end(), defects.begin(), defects.end());
       const bool sameTopology = t.components == mesh.topology.components && t.genus == mesh.topology.genus &&
-                                t.boundaryLoops == 0 && t.isolatedVertices == 0 && t.inconsistentEdges == 0 &&
-                                t.isManifold();
+                                t.boundaryLoops == mesh.topology.boundaryLoops && t.isolatedVertices == 0 &&
+                                t.inconsistentEdges == 0 && t.isManifold();
       if (bad.empty() && sameTopology) {
         r.mesh = std::move(out).value();
         r.sampleVertex = samples;
@@ -123,15 +135,31 @@ Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& met
     // New samples: in each bad cell, its vertex farthest from the samples.
     std::sort(bad.begin(), bad.end());
     bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
-    std::vector<int> farthest(cells, -1);
+    // New samples: in each bad cell its farthest vertex; the farthest boundary vertex in cells
+    // that reach the boundary, so that boundaries are sampled on the boundary.
+    std::vector<int> farthest(cells, -1), farthestOnBoundary(cells, -1);
     for (int v = 0; v < mesh.vertexCount(); ++v) {
       const int c = label[v];
-      if (c >= 0 && (farthest[c] < 0 || marcher.distance()[v] > marcher.distance()[farthest[c]])) farthest[c] = v;
+      if (c < 0) continue;
+      const double u = marcher.distance()[v];
+      if (farthest[c] < 0 || u > marcher.distance()[farthest[c]]) farthest[c] = v;
+      if (onBoundary[v] && (farthestOnBoundary[c] < 0 || u > marcher.distance()[farthestOnBoundary[c]]))
+        farthestOnBoundary[c] = v;
     }
+    for (int c = 0; c < cells; ++c)
+      if (farthestOnBoundary[c] >= 0 && marcher.distance()[farthestOnBoundary[c]] > 0.0) farthest[c] = farthestOnBoundary[c];
+    // A bad cell that is only its sample cannot be refined: refine the cells around it instead.
+    std::vector<char> isBad(cells, 0);
+    for (int c : bad) isBad[c] = 1;
+    for (int c : bad)
+      if (farthest[c] < 0 || marcher.distance()[farthest[c]] <= 0.0)
+        for (const int* k = mesh.cornersBegin(samples[c]); k != mesh.cornersEnd(samples[c]); ++k)
+          for (int w : {mesh.vertex(TriMesh::next(*k)), mesh.vertex(TriMesh::prev(*k))})
+            if (label[w] >= 0) isBad[label[w]] = 1;
     int added = 0;
-    for (int c : bad) {
+    for (int c = 0; c < cells; ++c) {
       const int v = farthest[c];
-      if (v < 0 || marcher.distance()[v] <= 0.0) continue;
+      if (!isBad[c] || v < 0 || marcher.distance()[v] <= 0.0) continue;
       samples.push_back(v);
       if (Status s = marcher.addSource(v, static_cast<int>(samples.size()) - 1); !s) return s;
       ++added;

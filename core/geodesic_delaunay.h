@@ -17,7 +17,9 @@
 // topology other than the input's), the vertex farthest from the samples inside the offending
 // cells becomes a new sample, the Voronoi diagram is updated incrementally, and the dual is
 // rebuilt; the number of added samples is reported.
-// Scope now: meshes without boundary (closed surfaces, any genus, several components).
+// Boundaries: output boundary edges must join samples lying on input boundaries, and a cell
+// that reaches a boundary must have its sample on it (else its farthest boundary vertex is
+// added); the output then has the input's boundary loops.
 // Cost: one incremental front per added sample plus O(F) per round.
 #pragma once
 
@@ -42,8 +44,8 @@ struct DelaunayResult {
   std::vector<int> region;          ///< per input vertex, its output vertex (Voronoi cell)
 };
 
-/// Fails with InvalidInput (no samples, a sample out of range, a mesh with boundary or
-/// non-manifold edges), NotConverged (still invalid after maxRepairRounds) or Cancelled.
+/// Fails with InvalidInput (no samples, a sample out of range, a non-manifold mesh),
+/// NotConverged (still invalid after maxRepairRounds) or Cancelled.
 Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> samples,
                                           const DelaunayParams& params = {}, Progress progress = {});
 

@@ -54,9 +54,6 @@ Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, Fi
     return nonManifold("the mesh has " + std::to_string(topology.nonManifoldEdges) + " non-manifold edges and " +
                        std::to_string(topology.nonManifoldVertices) +
                        " non-manifold vertices; repair them first (Cleaning and Repairing menu)");
-  if (topology.boundaryEdges > 0)
-    return invalidInput("the mesh has " + std::to_string(topology.boundaryLoops) +
-                        " boundary loops; this version remeshes closed surfaces only (boundaries are planned)");
   FpsParams fps;
   fps.targetCount = params.getInt(param::kTargetVertices);
   fps.minSpacing = fps.targetCount > 0 ? 0.0 : params.getAbsPerc(param::kSpacing);
@@ -99,7 +96,8 @@ Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, Fi
           std::to_string(result->addedSamples) + " added to make the triangulation valid (" +
           std::to_string(result->repairRounds) + " rounds); covering radius " + fmt(samples->coveringRadius));
   ctx.log("Topology kept: " + std::to_string(result->mesh.topology.components) + " components, genus " +
-          std::to_string(result->mesh.topology.genus));
+          std::to_string(result->mesh.topology.genus) + ", " + std::to_string(result->mesh.topology.boundaryLoops) +
+          " boundary loops");
   ctx.log("Angles: standard deviation " + fmt(angles.stdDegrees, "%.1f") + " deg, smallest " +
           fmt(angles.minDegrees, "%.1f") + " deg, " + fmt(100 * angles.shareMinBelow30, "%.2f") +
           " % of triangles with an angle under 30 deg");

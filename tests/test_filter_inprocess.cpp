@@ -262,10 +262,10 @@ TEST_F(FilterInProcess, UniformRemeshMakesANewLayerAndKeepsTheInput) {
 
 TEST_F(FilterInProcess, UniformRemeshBadInputLeavesTheDocumentAlone) {
   use("Remeshing: Geodesic Uniform");
-  const TriMesh shark = test::loadRealMesh("mech-holes-shark.off");  // has boundaries
-  MeshModel* mm = addMesh(doc, shark.positions, shark.triangles);
-  declare(*mm);
-  expectCleanFailure(*mm, "boundary loops");
+  MeshModel* nonManifold =
+      addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  declare(*nonManifold);
+  expectCleanFailure(*nonManifold, "non-manifold edges");
   EXPECT_EQ(doc.meshList.size(), 1) << "a failed filter added a layer";
   const TriMesh grid = test::planeGrid(4);
   MeshModel* cloud = addMesh(doc, grid.positions, {});
@@ -280,6 +280,7 @@ TEST_F(FilterInProcess, UniformRemeshBadInputLeavesTheDocumentAlone) {
   params.setValue(filters::param::kTargetVertices, IntValue(0));
   params.setValue(filters::param::kSpacing, AbsPercValue(0.0f));
   expectCleanFailure(*f, "TargetVertices is 0 and Spacing is not > 0");
+  EXPECT_EQ(doc.meshList.size(), 3) << "a failed filter added a layer";
 }
 
 }  // namespace

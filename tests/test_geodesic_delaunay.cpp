@@ -19,8 +19,10 @@ namespace {
 
 struct Recount {
   bool closedManifoldEdges = true;  ///< every edge in exactly two faces
+  bool manifoldEdges = true;        ///< every edge in one or two faces
+  int boundaryLoops = 0;            ///< loops of edges with one face
   bool oriented = true;             ///< every directed edge once
-  bool manifoldVertices = true;     ///< every vertex's link is one cycle
+  bool manifoldVertices = true;     ///< every vertex's link is one cycle or one path
   int components = 0;
   int genusSum = 0;
   int isolated = 0;
@@ -35,8 +37,10 @@ Recount recount(const std::vector<Tri>& tris, int nv) {
       ++undirected[std::minmax(a, b)];
       if (++directed[{a, b}] > 1) r.oriented = false;
     }
-  for (const auto& [e, n] : undirected)
+  for (const auto& [e, n] : undirected) {
     if (n != 2) r.closedManifoldEdges = false;
+    if (n > 2) r.manifoldEdges = false;
+  }
   // Link of each vertex: the edges opposite to it; one cycle <=> connected with all degrees 2.
   std::vector<std::vector<std::pair<int, int>>> link(nv);
   for (const Tri& t : tris)
@@ -51,8 +55,15 @@ Recount recount(const std::vector<Tri>& tris, int nv) {
       adj[a].push_back(b);
       adj[b].push_back(a);
     }
+    // One cycle (interior vertex) or one path (boundary vertex): connected, degrees <= 2, and
+    // zero or two ends.
     bool ok = true;
-    for (const auto& [a, n] : adj) ok = ok && n.size() == 2;
+    int ends = 0;
+    for (const auto& [a, n] : adj) {
+      ok = ok && n.size() <= 2;
+      ends += n.size() == 1;
+    }
+    ok = ok && (ends == 0 || ends == 2);
     std::set<int> seen = {adj.begin()->first};
     std::vector<int> stack = {adj.begin()->first};
     while (!stack.empty()) {
@@ -79,8 +90,27 @@ Recount recount(const std::vector<Tri>& tris, int nv) {
     if (!link[v].empty()) ++chi[find(v)];
   for (const auto& [e, n] : undirected) chi[find(e.first)] -= 1;
   for (const Tri& t : tris) chi[find(t[0])] += 1;
+  // Boundary loops: boundary edges joined at shared endpoints (union-find of their own).
+  std::vector<int> loop(nv);
+  std::iota(loop.begin(), loop.end(), 0);
+  auto findLoop = [&](int x) {
+    while (loop[x] != x) x = loop[x] = loop[loop[x]];
+    return x;
+  };
+  std::set<int> boundaryVertices;
+  std::map<int, int> loopsOfComponent;
+  for (const auto& [e, n] : undirected)
+    if (n == 1) {
+      loop[findLoop(e.first)] = findLoop(e.second);
+      boundaryVertices.insert(e.first);
+      boundaryVertices.insert(e.second);
+    }
+  std::set<int> loopRoots;
+  for (int v : boundaryVertices)
+    if (loopRoots.insert(findLoop(v)).second) ++loopsOfComponent[find(v)];
+  r.boundaryLoops = static_cast<int>(loopRoots.size());
   r.components = static_cast<int>(chi.size());
-  for (const auto& [root, c] : chi) r.genusSum += static_cast<int>((2 - c) / 2);
+  for (const auto& [root, c] : chi) r.genusSum += static_cast<int>((2 - c - loopsOfComponent[root]) / 2);
   return r;
 }
 
@@ -124,6 +154,42 @@ INSTANTIATE_TEST_SUITE_P(Meshes, DelaunayOnClosedMeshes,
                            return n.substr(0, n.find('.')) + "_" + std::to_string(int(100 * std::get<1>(p.param)));
                          });
 
+class DelaunayWithBoundaries : public ::testing::TestWithParam<std::tuple<std::string, double>> {};
+
+TEST_P(DelaunayWithBoundaries, BoundaryLoopsKept) {
+  const auto& [name, fraction] = GetParam();
+  const TriMesh m = test::loadRealMesh(name);
+  const Recount input = recount(m.triangles, m.vertexCount());
+  ASSERT_GT(input.boundaryLoops, 0);
+  FpsParams fps;
+  fps.targetCount = std::max(8, static_cast<int>(fraction * m.vertexCount()));
+  const auto samples = farthestPointSampling(m, Metric::uniform(), fps);
+  ASSERT_TRUE(samples);
+  const auto r = geodesicDelaunay(m, Metric::uniform(), samples->samples);
+  ASSERT_TRUE(r) << r.status().message;
+  const Recount out = recount(r->mesh.triangles, r->mesh.vertexCount());
+  std::printf("%-22s %2.0f%%: %d samples + %d added in %d rounds; loops %d/%d, components %d/%d, genus %d/%d\n",
+              name.c_str(), 100 * fraction, fps.targetCount, r->addedSamples, r->repairRounds, out.boundaryLoops,
+              input.boundaryLoops, out.components, input.components, out.genusSum, input.genusSum);
+  EXPECT_TRUE(out.manifoldEdges);
+  EXPECT_TRUE(out.oriented);
+  EXPECT_TRUE(out.manifoldVertices);
+  EXPECT_EQ(out.boundaryLoops, input.boundaryLoops);
+  EXPECT_EQ(out.components, input.components);
+  EXPECT_EQ(out.genusSum, input.genusSum);
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, DelaunayWithBoundaries,
+                         ::testing::Combine(::testing::Values("mech-holes-shark.off", "mask_cone.off"),
+                                            ::testing::Values(0.1, 0.3)),
+                         [](const ::testing::TestParamInfo<std::tuple<std::string, double>>& p) {
+                           std::string n = std::get<0>(p.param);
+                           n = n.substr(0, n.find('.'));
+                           for (char& ch : n)
+                             if (ch == '-') ch = '_';
+                           return n + "_" + std::to_string(int(100 * std::get<1>(p.param)));
+                         });
+
 TEST(Delaunay, VerySparseSamplesAreRepaired) {
   const TriMesh m = test::loadRealMesh("bunny00.off");
   FpsParams fps;
@@ -139,8 +205,6 @@ TEST(Delaunay, VerySparseSamplesAreRepaired) {
 }
 
 TEST(Delaunay, RejectsBadInput) {
-  const TriMesh m = test::loadRealMesh("mech-holes-shark.off");
-  EXPECT_EQ(geodesicDelaunay(m, Metric::uniform(), {0, 1, 2}).status().code, StatusCode::InvalidInput);
   const TriMesh f = test::loadRealMesh("fandisk.off");
   EXPECT_EQ(geodesicDelaunay(f, Metric::uniform(), {}).status().code, StatusCode::InvalidInput);
   EXPECT_EQ(geodesicDelaunay(f, Metric::uniform(), {-3}).status().code, StatusCode::InvalidInput);

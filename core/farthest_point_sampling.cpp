@@ -20,6 +20,14 @@ struct Farthest {  // max-heap entry; stale when the vertex's distance changed s
 
 Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& metric, const FpsParams& params,
                                           Progress progress) {
+  if (!metric.isUniform() && static_cast<int>(metric.P.size()) != mesh.vertexCount())
+    return invalidInput("the metric does not have one value per vertex");
+  FastMarcher marcher(mesh, metric);
+  return farthestPointSampling(marcher, params, std::move(progress));
+}
+
+Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams& params, Progress progress) {
+  const TriMesh& mesh = marcher.mesh();
   if (params.targetCount < 0) return invalidInput("the target sample count must be >= 0");
   if (!(params.minSpacing >= 0.0) || !std::isfinite(params.minSpacing))
     return invalidInput("the sample spacing must be finite and >= 0");
@@ -29,15 +37,13 @@ Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& met
   if (params.targetCount > usable)
     return invalidInput("cannot place " + std::to_string(params.targetCount) + " samples on " +
                         std::to_string(usable) + " vertices");
-  if (!metric.isUniform() && static_cast<int>(metric.P.size()) != mesh.vertexCount())
-    return invalidInput("the metric does not have one value per vertex");
   if (!(params.boundaryPriority >= 1.0) || !std::isfinite(params.boundaryPriority))
     return invalidInput("the boundary priority must be finite and >= 1");
   std::vector<char> onBoundary(mesh.vertexCount(), 0);
   for (int c = 0; c < 3 * mesh.faceCount(); ++c)
     if (mesh.oppositeCorner[c] == kBoundary) onBoundary[mesh.vertex(TriMesh::next(c))] = onBoundary[mesh.vertex(TriMesh::prev(c))] = 1;
 
-  FastMarcher marcher(mesh, metric);
+  marcher.reset();
   // Start: the vertex farthest from a seeded vertex of a face.
   int start = static_cast<int>(params.seed % static_cast<unsigned>(mesh.vertexCount()));
   while (mesh.valence(start) == 0) start = (start + 1) % mesh.vertexCount();

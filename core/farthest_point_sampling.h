@@ -13,6 +13,7 @@
 
 #include <vector>
 
+#include "core/fast_marching.h"
 #include "core/metric.h"
 #include "core/progress.h"
 #include "core/status.h"
@@ -42,5 +43,9 @@ struct FpsResult {
 /// or more samples than vertices in faces; (Cancelled) if the progress callback says so.
 Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& metric, const FpsParams& params = {},
                                           Progress progress = {});
+
+/// The same on a caller's engine (reset first). On return the engine holds the field of the
+/// samples, labelled by their index, so the next stage (geodesicDelaunay) can go on from it.
+Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams& params = {}, Progress progress = {});
 
 }  // namespace gr

@@ -55,8 +55,9 @@ std::vector<int> defectCells(const TriMesh& dual, const std::vector<char>& sampl
 
 }  // namespace
 
-Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> samples,
-                                          const DelaunayParams& params, Progress progress) {
+namespace {
+
+Status checkInput(const TriMesh& mesh, const std::vector<int>& samples) {
   if (samples.empty()) return invalidInput("no samples were given");
   for (int s : samples)
     if (s < 0 || s >= mesh.vertexCount()) return invalidInput("sample vertex " + std::to_string(s) + " does not exist");
@@ -64,16 +65,31 @@ Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& met
     return invalidInput("the mesh is not manifold (" + std::to_string(mesh.topology.nonManifoldEdges) +
                         " non-manifold edges, " + std::to_string(mesh.topology.nonManifoldVertices) +
                         " non-manifold vertices)");
-  std::vector<char> onBoundary(mesh.vertexCount(), 0);
-  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
-    if (mesh.oppositeCorner[c] == kBoundary) onBoundary[mesh.vertex(TriMesh::next(c))] = onBoundary[mesh.vertex(TriMesh::prev(c))] = 1;
+  return Status::ok();
+}
 
+}  // namespace
+
+Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> samples,
+                                          const DelaunayParams& params, Progress progress) {
+  if (Status s = checkInput(mesh, samples); !s) return s;
   FastMarcher marcher(mesh, metric);
   std::sort(samples.begin(), samples.end());
   samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
   for (size_t i = 0; i < samples.size(); ++i)
     if (Status s = marcher.addSource(samples[i], static_cast<int>(i)); !s) return s;
   if (Status s = marcher.propagate(); !s) return s;
+  return geodesicDelaunay(marcher, std::move(samples), params, std::move(progress));
+}
+
+Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<int> samples, const DelaunayParams& params,
+                                          Progress progress) {
+  const TriMesh& mesh = marcher.mesh();
+  if (Status s = checkInput(mesh, samples); !s) return s;
+  std::vector<char> onBoundary(mesh.vertexCount(), 0);
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
+    if (mesh.oppositeCorner[c] == kBoundary) onBoundary[mesh.vertex(TriMesh::next(c))] = onBoundary[mesh.vertex(TriMesh::prev(c))] = 1;
+
 
   DelaunayResult r;
   const int initialCount = static_cast<int>(samples.size());

@@ -25,6 +25,7 @@
 
 #include <vector>
 
+#include "core/fast_marching.h"
 #include "core/metric.h"
 #include "core/progress.h"
 #include "core/status.h"
@@ -47,6 +48,11 @@ struct DelaunayResult {
 /// Fails with InvalidInput (no samples, a sample out of range, a non-manifold mesh),
 /// NotConverged (still invalid after maxRepairRounds) or Cancelled.
 Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> samples,
+                                          const DelaunayParams& params = {}, Progress progress = {});
+
+/// The same on an engine that already holds the field of `samples` with labels 0..n-1 in that
+/// order (as farthestPointSampling leaves it): no propagation from scratch.
+Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<int> samples,
                                           const DelaunayParams& params = {}, Progress progress = {});
 
 }  // namespace gr

@@ -63,10 +63,12 @@ Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, Fi
     return invalidInput("TargetVertices is 0 and Spacing is not > 0: give one of them");
   const bool labelInput = params.getBool(param::kLabelInput);
 
-  Expected<FpsResult> samples = farthestPointSampling(mesh, Metric::uniform(), fps, ctx.progress.sub(0.0, 0.6));
+  // One engine for both stages: the triangulation starts from the sampling's Voronoi diagram.
+  const Metric metric = Metric::uniform();
+  FastMarcher marcher(mesh, metric);
+  Expected<FpsResult> samples = farthestPointSampling(marcher, fps, ctx.progress.sub(0.0, 0.6));
   if (!samples) return samples.status();
-  Expected<DelaunayResult> result =
-      geodesicDelaunay(mesh, Metric::uniform(), samples->samples, {}, ctx.progress.sub(0.6, 0.9));
+  Expected<DelaunayResult> result = geodesicDelaunay(marcher, samples->samples, {}, ctx.progress.sub(0.6, 0.9));
   if (!result) return result.status();
   const AngleStatistics angles = angleStatistics(result->mesh);
   const SurfaceDistance hausdorff = surfaceDistance(result->mesh, mesh);

@@ -190,6 +190,31 @@ INSTANTIATE_TEST_SUITE_P(Meshes, DelaunayWithBoundaries,
                            return n + "_" + std::to_string(int(100 * std::get<1>(p.param)));
                          });
 
+// A synthetic mesh of two components of different sizes: two icospheres, radius 1 and 0.5.
+TEST(Delaunay, TwoComponentsAtTenAndThirtyPercent) {
+  const TriMesh a = test::icosphere(4, 1.0), b = test::icosphere(3, 0.5);
+  std::vector<Vec3> pos = a.positions;
+  std::vector<Tri> tris = a.triangles;
+  for (const Vec3& p : b.positions) pos.push_back(p + Vec3(3.0, 0.0, 0.0));
+  for (const Tri& t : b.triangles) tris.push_back({t[0] + a.vertexCount(), t[1] + a.vertexCount(), t[2] + a.vertexCount()});
+  const TriMesh m = std::move(buildTriMesh(pos, tris)).value();
+  for (double fraction : {0.1, 0.3}) {
+    FpsParams fps;
+    fps.targetCount = static_cast<int>(fraction * m.vertexCount());
+    const auto samples = farthestPointSampling(m, Metric::uniform(), fps);
+    ASSERT_TRUE(samples);
+    const auto r = geodesicDelaunay(m, Metric::uniform(), samples->samples);
+    ASSERT_TRUE(r) << r.status().message;
+    const Recount out = recount(r->mesh.triangles, r->mesh.vertexCount());
+    std::printf("two icospheres %2.0f%%: %d samples + %d added, components %d, genus %d\n", 100 * fraction,
+                fps.targetCount, r->addedSamples, out.components, out.genusSum);
+    EXPECT_EQ(r->mesh.vertexCount(), fps.targetCount + r->addedSamples);
+    EXPECT_TRUE(out.closedManifoldEdges && out.oriented && out.manifoldVertices);
+    EXPECT_EQ(out.components, 2);
+    EXPECT_EQ(out.genusSum, 0);
+  }
+}
+
 TEST(Delaunay, VerySparseSamplesAreRepaired) {
   const TriMesh m = test::loadRealMesh("bunny00.off");
   FpsParams fps;

@@ -17,5 +17,6 @@ constexpr const char* kTargetVertices = "TargetVertices";
 constexpr const char* kSpacing = "Spacing";
 constexpr const char* kSeed = "Seed";
 constexpr const char* kLabelInput = "LabelInput";
+constexpr const char* kRefinement = "Refinement";
 
 }  // namespace gr::filters::param

@@ -260,6 +260,32 @@ TEST_F(FilterInProcess, UniformRemeshMakesANewLayerAndKeepsTheInput) {
   EXPECT_NE(logText().find("Hausdorff distance"), std::string::npos) << logText();
 }
 
+// With Refinement, samples lie between input vertices: a linear quality field (q = x) must come
+// out exact at every output vertex, and the refined run must still keep the topology.
+TEST_F(FilterInProcess, UniformRemeshInterpolatesQualityAtRefinedSamples) {
+  use("Remeshing: Geodesic Uniform");
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  for (auto& v : mm->cm.vert) v.Q() = v.cP()[0];
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(1942));  // 30%
+  params.setValue(filters::param::kRefinement, IntValue(1));
+  ASSERT_TRUE(apply()) << logText();
+  MeshModel* out = doc.mm();
+  ASSERT_NE(out, mm);
+  int betweenVertices = 0;
+  for (const auto& v : out->cm.vert) {
+    EXPECT_NEAR(v.cQ(), v.cP()[0], 1e-5) << "quality not interpolated at the sample";
+    bool isInputVertex = false;
+    for (const auto& w : mm->cm.vert) isInputVertex = isInputVertex || w.cP() == v.cP();
+    betweenVertices += !isInputVertex;
+  }
+  EXPECT_GT(betweenVertices, 0) << "with refinement some samples lie between input vertices";
+  EXPECT_NE(logText().find("subdivisions"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("Topology kept: 1 components, genus 0, 0 boundary loops"), std::string::npos) << logText();
+}
+
 TEST_F(FilterInProcess, UniformRemeshBadInputLeavesTheDocumentAlone) {
   use("Remeshing: Geodesic Uniform");
   MeshModel* nonManifold =
@@ -280,6 +306,9 @@ TEST_F(FilterInProcess, UniformRemeshBadInputLeavesTheDocumentAlone) {
   params.setValue(filters::param::kTargetVertices, IntValue(0));
   params.setValue(filters::param::kSpacing, AbsPercValue(0.0f));
   expectCleanFailure(*f, "TargetVertices is 0 and Spacing is not > 0");
+  declare(*f);
+  params.setValue(filters::param::kRefinement, IntValue(7));
+  expectCleanFailure(*f, "Refinement must be 0 to 3");
   EXPECT_EQ(doc.meshList.size(), 3) << "a failed filter added a layer";
 }
 

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/evaluation.h"
 #include "core/fast_marching.h"
 #include "core/vcg_convert.h"
 #include "core/vcg_mesh.h"
@@ -147,6 +148,27 @@ TEST(Meshlabserver, UniformRemeshOfFandiskIsAValidMeshOfTheSameTopology) {
   EXPECT_TRUE(result->topology.isManifold());
   EXPECT_EQ(result->topology.inconsistentEdges, 0);
   EXPECT_EQ(2 * result->vertexCount() - 4, result->faceCount()) << "a closed genus-0 triangle mesh has F = 2V - 4";
+}
+
+// Refinement 2 at 30%: the triangles reach the quality the issue asks for on fandisk (measured
+// in development: smallest angle 23 deg, 0.85% of triangles with an angle under 30 deg).
+TEST(Meshlabserver, RefinedUniformRemeshOfFandiskHasWellShapedTriangles) {
+  const std::string out = kOut + "fandisk_uniform_refined.ply";
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + test::meshPath("fandisk.off") + "' -o '" + out + "' -m sa -s '" +
+                                      kResources + "uniform_remesh_30pct_refined.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto result = loadTriMesh(out);
+  ASSERT_TRUE(result) << result.status().message;
+  EXPECT_EQ(result->topology.components, 1);
+  EXPECT_EQ(result->topology.genus, 0);
+  EXPECT_EQ(result->topology.boundaryEdges, 0);
+  EXPECT_TRUE(result->topology.isManifold());
+  const AngleStatistics angles = angleStatistics(*result);
+  std::printf("fandisk 30%%, refinement 2: %d vertices, angle std %.1f deg, smallest %.1f deg, %.2f %% under 30 deg\n",
+              result->vertexCount(), angles.stdDegrees, angles.minDegrees, 100 * angles.shareMinBelow30);
+  EXPECT_GE(angles.minDegrees, 20.0);
+  EXPECT_LE(angles.shareMinBelow30, 0.01);
 }
 
 TEST(Meshlabserver, UniformRemeshKeepsTheBoundaryLoopsOfTheShark) {

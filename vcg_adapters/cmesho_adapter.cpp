@@ -1,5 +1,6 @@
 #include "vcg_adapters/cmesho_adapter.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <vcg/complex/algorithms/update/bounding.h>
@@ -53,15 +54,31 @@ void colorByLabel(CMeshO& m, const CoreView& view, const std::vector<int>& label
 }
 
 void writeMesh(const TriMesh& mesh, CMeshO& out, const CMeshO& in, const CoreView& view,
-               const std::vector<int>& inputVertexOf, bool copyColor, bool copyQuality) {
+               const std::vector<SurfacePoint>& originOf, bool copyColor, bool copyQuality) {
   out.Clear();
   auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(out, mesh.vertexCount());
   for (int v = 0; v < mesh.vertexCount(); ++v, ++vi) {
     const Vec3& p = mesh.positions[v];
     vi->P() = CMeshO::CoordType(Scalarm(p.x()), Scalarm(p.y()), Scalarm(p.z()));
-    const CVertexO& source = in.vert[view.map.vcgOfCoreVertex[inputVertexOf[v]]];
-    if (copyColor) vi->C() = source.cC();
-    if (copyQuality) vi->Q() = source.cQ();
+    // The input vertices (and weights) the output vertex lies between.
+    const SurfacePoint& o = originOf[v];
+    int corner[3] = {o.vertex, -1, -1};
+    double weight[3] = {1.0, 0.0, 0.0};
+    if (o.vertex < 0)
+      for (int k = 0; k < 3; ++k) {
+        corner[k] = view.mesh.triangles[o.face][k];
+        weight[k] = o.bary[k];
+      }
+    double q = 0.0, rgba[4] = {0, 0, 0, 0};
+    for (int k = 0; k < 3; ++k) {
+      if (corner[k] < 0) continue;
+      const CVertexO& source = in.vert[view.map.vcgOfCoreVertex[corner[k]]];
+      q += weight[k] * source.cQ();
+      for (int c = 0; c < 4; ++c) rgba[c] += weight[k] * source.cC()[c];
+    }
+    if (copyQuality) vi->Q() = Scalarm(q);
+    if (copyColor)
+      for (int c = 0; c < 4; ++c) vi->C()[c] = static_cast<unsigned char>(std::lround(std::clamp(rgba[c], 0.0, 255.0)));
   }
   if (mesh.faceCount() > 0) {
     auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(out, mesh.faceCount());

@@ -9,6 +9,7 @@
 
 #include <vector>
 
+#include "core/fast_marching.h"
 #include "core/status.h"
 #include "core/tri_mesh.h"
 #include "core/vcg_convert.h"
@@ -44,9 +45,9 @@ void colorByLabel(CMeshO& m, const CoreView& view, const std::vector<int>& label
                   vcg::Color4b missingColor = vcg::Color4b::LightGray);
 
 /// Fills `out` (cleared first) with a core mesh; vertex i of `mesh` becomes vertex i of `out`.
-/// Colour and quality of output vertex i are copied from input vertex inputVertexOf[i] of `in`
-/// (a core index of `view`) when copyColor / copyQuality are set.
+/// Colour and quality of output vertex i are interpolated on `in` at originOf[i], a point of the
+/// input's core mesh (`view`), when copyColor / copyQuality are set.
 void writeMesh(const TriMesh& mesh, CMeshO& out, const CMeshO& in, const CoreView& view,
-               const std::vector<int>& inputVertexOf, bool copyColor, bool copyQuality);
+               const std::vector<SurfacePoint>& originOf, bool copyColor, bool copyQuality);
 
 }  // namespace gr::adapters

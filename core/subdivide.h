@@ -1,0 +1,28 @@
+// 1-to-4 midpoint subdivision that remembers where each new vertex lies on the original mesh.
+//
+// Each face is split into four at its edge midpoints; the surface does not change (midpoints
+// lie in the original faces), the topology does not change, and the vertex count grows about 4x
+// per level. Computing Voronoi cells on the finer mesh gives sample positions and cell
+// boundaries at a finer resolution than the input's vertices.
+// Cost: O(F) per level.
+#pragma once
+
+#include <vector>
+
+#include "core/fast_marching.h"
+#include "core/status.h"
+#include "core/tri_mesh.h"
+
+namespace gr {
+
+struct Subdivision {
+  TriMesh mesh;
+  /// Per vertex of `mesh`: the point of the original mesh it sits on (a vertex, or a face with
+  /// barycentric coordinates). Original vertices keep their indices and come first.
+  std::vector<SurfacePoint> origin;
+};
+
+/// levels >= 0 (0 returns a copy); fails (InvalidInput) on a negative level count.
+Expected<Subdivision> subdivideMidpoint(const TriMesh& mesh, int levels);
+
+}  // namespace gr

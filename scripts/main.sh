@@ -41,4 +41,4 @@ run() {  # run <script.mlx> <output.ply> <what the output holds>
 run "$root/resources/fast_marching_vertex0.mlx" "$root/output/${name}_geodesic.ply" \
     "per-vertex quality = geodesic distance from vertex 0, colour ramp"
 run "$root/resources/uniform_remesh_10pct.mlx" "$root/output/${name}_remesh.ply" \
-    "geodesic uniform remeshing (closed surfaces), colour and quality carried from the input"
+    "geodesic uniform remeshing, colour and quality carried from the input"

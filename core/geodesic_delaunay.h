@@ -16,7 +16,8 @@
 // (an output edge with three or more triangles, a non-manifold vertex, a triangle twice, a
 // topology other than the input's), the vertex farthest from the samples inside the offending
 // cells becomes a new sample, the Voronoi diagram is updated incrementally, and the dual is
-// rebuilt; the number of added samples is reported.
+// rebuilt; the number of added samples is reported. Last, triangles with an angle above 179
+// degrees (three samples in a row on a straight boundary) get their longest edge flipped.
 // Boundaries: output boundary edges must join samples lying on input boundaries, and a cell
 // that reaches a boundary must have its sample on it (else its farthest boundary vertex is
 // added); the output then has the input's boundary loops.
@@ -42,6 +43,7 @@ struct DelaunayResult {
   std::vector<int> sampleVertex;    ///< per output vertex, the input vertex it sits on
   int addedSamples = 0;             ///< samples inserted by the repair
   int repairRounds = 0;
+  int flippedEdges = 0;             ///< flat triangles (an angle above 179 deg) fixed by a flip
   std::vector<int> region;          ///< per input vertex, its output vertex (Voronoi cell)
 };
 

@@ -215,6 +215,28 @@ TEST(Delaunay, TwoComponentsAtTenAndThirtyPercent) {
   }
 }
 
+// Straight boundaries put three samples in a row; the result must not keep them as a flat
+// (zero-area) triangle.
+TEST(Delaunay, NoFlatTrianglesAlongStraightBoundaries) {
+  for (double jitter : {0.0, 0.3}) {
+    const TriMesh m = test::planeGrid(40, 1.0, jitter, 5);
+    for (double fraction : {0.1, 0.3}) {
+      FpsParams fps;
+      fps.targetCount = static_cast<int>(fraction * m.vertexCount());
+      const auto samples = farthestPointSampling(m, Metric::uniform(), fps);
+      const auto r = geodesicDelaunay(m, Metric::uniform(), samples->samples);
+      ASSERT_TRUE(r) << r.status().message;
+      const AngleStatistics a = angleStatistics(r->mesh);
+      const Recount out = recount(r->mesh.triangles, r->mesh.vertexCount());
+      std::printf("plane jitter %.1f, %2.0f%%: %d flips, largest angle %.1f deg, smallest %.1f deg\n", jitter,
+                  100 * fraction, r->flippedEdges, a.maxDegrees, a.minDegrees);
+      EXPECT_LT(a.maxDegrees, 179.0);
+      EXPECT_EQ(out.boundaryLoops, 1);
+      EXPECT_TRUE(out.manifoldEdges && out.oriented && out.manifoldVertices);
+    }
+  }
+}
+
 TEST(Delaunay, VerySparseSamplesAreRepaired) {
   const TriMesh m = test::loadRealMesh("bunny00.off");
   FpsParams fps;

@@ -113,7 +113,9 @@ Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, Fi
           std::to_string(result->mesh.faceCount()) + " faces on the new layer '" + label.toStdString() + "'");
   ctx.log("Samples: " + std::to_string(samples->samples.size()) + " by farthest-point sampling, " +
           std::to_string(result->addedSamples) + " added to make the triangulation valid (" +
-          std::to_string(result->repairRounds) + " rounds); covering radius " + fmt(samples->coveringRadius));
+          std::to_string(result->repairRounds) + " rounds); covering radius " + fmt(samples->coveringRadius) +
+          (result->flippedEdges > 0 ? "; " + std::to_string(result->flippedEdges) + " flat triangles fixed by edge flips"
+                                    : std::string()));
   ctx.log("Topology kept: " + std::to_string(result->mesh.topology.components) + " components, genus " +
           std::to_string(result->mesh.topology.genus) + ", " + std::to_string(result->mesh.topology.boundaryLoops) +
           " boundary loops");

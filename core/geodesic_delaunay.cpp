@@ -3,8 +3,8 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <set>
 #include <string>
 
@@ -111,10 +111,6 @@ std::vector<int> defectCells(const TriMesh& dual, const std::vector<char>& sampl
   }
   return {cells.begin(), cells.end()};
 }
-
-}  // namespace
-
-namespace {
 
 Status checkInput(const TriMesh& mesh, const std::vector<int>& samples) {
   if (samples.empty()) return invalidInput("no samples were given");

@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# The remeshing benchmark: installs what is missing, builds bench_remesh, runs it (ours and CGAL's
+# isotropic remeshing in one process, same meshes, same vertex counts), then prints a markdown
+# table of times, ratios and triangle quality.
+#   bash scripts/bench_remesh.sh                               # everything (~2.5 min on 2 cores)
+#   bash scripts/bench_remesh.sh --benchmark_filter=-sub3      # extra arguments go to the binary
+# Output: $BUILD_DIR/bench_remesh.json (the run) and the table on stdout.
+# Run it on an otherwise idle machine: the table compares times taken in this one run.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${BUILD_DIR:-$root/build}
+bash "$root/scripts/setup.sh"
+bash "$root/scripts/build.sh" --target bench_remesh
+json="$build/bench_remesh.json"
+"$build/bench/bench_remesh" --benchmark_out="$json" --benchmark_out_format=json "$@"
+echo
+python3 - "$json" <<'PY'
+import json, statistics, sys
+from collections import OrderedDict
+
+data = json.load(open(sys.argv[1]))
+ctx = data.get("context", {})
+runs = OrderedDict()  # (family, mesh, target) -> iteration rows (one per repetition)
+for b in data.get("benchmarks", []):
+    if b.get("run_type", "iteration") != "iteration":
+        continue
+    family, mesh, target = b.get("run_name", b["name"]).split("/")[:3]
+    runs.setdefault((family, mesh, target), []).append(b)
+
+def med(rows, key, scale=1.0):
+    vals = [r[key] * scale for r in rows if key in r]
+    return statistics.median(vals) if vals else None
+
+def ms(rows):  # CPU time per run, median of the repetitions
+    unit = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[rows[0].get("time_unit", "ns")]
+    return med(rows, "cpu_time", unit)
+
+def t(x):
+    return "—" if x is None else (f"{x / 1000:.3g} s" if x >= 1000 else f"{x:.3g} ms")
+
+print(f"Run: {ctx.get('date', '?')} on {ctx.get('host_name', '?')}, {ctx.get('num_cpus', '?')} CPUs, "
+      f"load average {ctx.get('load_avg', '?')}; CPU time per run, median of the repetitions; "
+      "ratio = CGAL time / our time (> 1: ours is faster); ours: time = engine (FastMarcher construction) "
+      "+ sampling + triangulation; quality: std of all angles, smallest angle, "
+      "% of triangles with an angle under 30°, one-sided Hausdorff distance output → input in % of the "
+      "input's bounding-box diagonal.")
+print()
+print("| mesh | target | method | vertices | faces | added | time | engine | sampling | triangulation | CGAL / ours "
+      "| angle std | min angle | % < 30° | Hausdorff % |")
+print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+shown = set()
+for (family, mesh, target), rows in runs.items():
+    r = rows[0]
+    err = next((x.get("error_message", "error") for x in rows if x.get("error_occurred")), None)
+    if mesh not in shown and "vertices_in" in r:
+        shown.add(mesh)
+        print(f"| {mesh} | input | — | {int(r['vertices_in']):,} | | | | | | | | {r['in_angle_std']:.1f}° "
+              f"| {r['in_angle_min']:.1f}° | {r['in_lt30_pct']:.2f} | |")
+    if err:
+        print(f"| {mesh} | {target} | {family} | error: {err} | | | | | | | | | | | |")
+        continue
+    ours = runs.get(("Ours", mesh, target))
+    ratio = ms(rows) / ms(ours) if family == "Cgal" and ours and "vertices" in ours[0] else None
+    added = f"{int(r['added']):,}" if "added" in r else ""
+    eng = t(med(rows, "engine_ms")) if family == "Ours" else ""
+    samp = t(med(rows, "sampling_ms")) if family == "Ours" else ""
+    tri = t(med(rows, "delaunay_ms")) if family == "Ours" else ""
+    label = "**ours**" if family == "Ours" else f"CGAL (L = {r['edge_length']:.4g})"
+    print(f"| {mesh} | {target} | {label} | {int(r['vertices']):,} | {int(r['faces']):,} | {added} "
+          f"| {t(ms(rows))} | {eng} | {samp} | {tri} | {'' if ratio is None else f'{ratio:.2f}×'} "
+          f"| {r['angle_std']:.1f}° | {r['angle_min']:.1f}° | {r['lt30_pct']:.2f} | {r['hausdorff_pct']:.3f} |")
+PY

@@ -2,19 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <queue>
 #include <string>
 
 #include "core/fast_marching.h"
+#include "core/indexed_heap.h"
 
 namespace gr {
 namespace {
-
-struct Farthest {  // max-heap entry; stale when the vertex's distance changed since
-  double u;
-  int v;
-  bool operator<(const Farthest& o) const { return u < o.u || (u == o.u && v > o.v); }
-};
 
 }  // namespace
 
@@ -66,10 +60,11 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
 
   FpsResult r;
   const std::vector<double>& U = marcher.distance();
-  std::priority_queue<Farthest> farthest, farthestOnBoundary;  // interior / boundary vertices
-  const auto clean = [&U](std::priority_queue<Farthest>& heap) {  // drop stale entries
-    while (!heap.empty() && heap.top().u != U[heap.top().v]) heap.pop();
-  };
+  // The farthest interior and boundary vertices: min-heaps keyed by -U, each vertex once.
+  IndexedHeap farthest, farthestOnBoundary;
+  farthest.resize(mesh.vertexCount());
+  farthestOnBoundary.resize(mesh.vertexCount());
+  const auto topU = [](const IndexedHeap& heap) { return heap.empty() ? 0.0 : -heap.top().key; };
   const int cap = params.targetCount > 0 ? params.targetCount : usable;
   int next = first;
   double nextU = kUnreached;
@@ -78,7 +73,7 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
     r.insertionDistance.push_back(nextU);
     if (Status s = marcher.addSource(next, static_cast<int>(r.samples.size()) - 1); !s) return s;
     if (Status s = marcher.propagate(); !s) return s;
-    for (int v : marcher.acceptedOrder()) (onBoundary[v] ? farthestOnBoundary : farthest).push({U[v], v});
+    for (int v : marcher.acceptedOrder()) (onBoundary[v] ? farthestOnBoundary : farthest).set(v, -U[v]);
     if (static_cast<int>(r.samples.size()) >= cap) break;
     if (!progress.report(double(r.samples.size()) / cap, "Farthest point sampling")) return cancelled();
     if (!pending.empty()) {
@@ -87,20 +82,14 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
       nextU = kUnreached;
       continue;
     }
-    clean(farthest);
-    clean(farthestOnBoundary);
-    const double interiorU = farthest.empty() ? 0.0 : farthest.top().u;
-    const double boundaryU = farthestOnBoundary.empty() ? 0.0 : farthestOnBoundary.top().u;
+    const double interiorU = topU(farthest), boundaryU = topU(farthestOnBoundary);
     if (std::max(interiorU, boundaryU) <= 0.0) break;  // every vertex is a sample
     if (params.minSpacing > 0.0 && std::max(interiorU, boundaryU) < params.minSpacing) break;
     const bool boundaryFirst = boundaryU > 0.0 && boundaryU * params.boundaryPriority >= interiorU;
     next = boundaryFirst ? farthestOnBoundary.top().v : farthest.top().v;
     nextU = boundaryFirst ? boundaryU : interiorU;
   }
-  clean(farthest);
-  clean(farthestOnBoundary);
-  r.coveringRadius = std::max(farthest.empty() ? 0.0 : farthest.top().u,
-                              farthestOnBoundary.empty() ? 0.0 : farthestOnBoundary.top().u);
+  r.coveringRadius = std::max(topU(farthest), topU(farthestOnBoundary));
   r.distance = U;
   r.region = marcher.label();
   return r;

@@ -50,6 +50,7 @@
 #include "core/fast_marching.h"
 #include "core/metric.h"
 #include "core/tri_mesh.h"
+#include "core/subdivide.h"
 #include "core/vcg_mesh.h"
 
 namespace {
@@ -206,36 +207,6 @@ class Dijkstra {
 // ------------------------------------------------------------------------------------------------
 // Meshes
 
-/// 1-to-4 midpoint subdivision: one new vertex per edge (shared through oppositeCorner), each
-/// triangle (a, b, c) split into (a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca). The old
-/// vertices keep their indices. Needs no non-manifold edge.
-gr::Expected<gr::TriMesh> subdivideMidpoint(const gr::TriMesh& m) {
-  if (m.topology.nonManifoldEdges > 0)
-    return gr::nonManifold("midpoint subdivision needs a mesh without non-manifold edges (" +
-                           std::to_string(m.topology.nonManifoldEdges) + " found)");
-  const int nc = 3 * m.faceCount();
-  std::vector<gr::Vec3> positions = m.positions;
-  std::vector<int> mid(nc, -1);  // per corner: the new vertex on its opposite edge
-  for (int c = 0; c < nc; ++c) {
-    if (mid[c] >= 0) continue;
-    mid[c] = static_cast<int>(positions.size());
-    positions.push_back(0.5 * (m.positions[m.vertex(gr::TriMesh::next(c))] +
-                               m.positions[m.vertex(gr::TriMesh::prev(c))]));
-    if (m.oppositeCorner[c] >= 0) mid[m.oppositeCorner[c]] = mid[c];
-  }
-  std::vector<gr::Tri> triangles;
-  triangles.reserve(4 * static_cast<size_t>(m.faceCount()));
-  for (int f = 0; f < m.faceCount(); ++f) {
-    const gr::Tri& t = m.triangles[f];
-    const int bc = mid[3 * f], ca = mid[3 * f + 1], ab = mid[3 * f + 2];
-    triangles.push_back({t[0], ab, ca});
-    triangles.push_back({ab, t[1], bc});
-    triangles.push_back({ca, bc, t[2]});
-    triangles.push_back({ab, bc, ca});
-  }
-  return gr::buildTriMesh(std::move(positions), std::move(triangles));
-}
-
 struct MeshSpec {
   const char* name;
   const char* file;
@@ -273,7 +244,10 @@ BenchMesh* getMesh(benchmark::State& state, const MeshSpec& spec) {
   auto& slot = meshCache()[spec.name];
   if (slot) return slot.get();
   gr::Expected<gr::TriMesh> m = gr::loadTriMesh(std::string(GR_MESH_DIR) + "/" + spec.file);
-  for (int i = 0; m && i < spec.subdivisions; ++i) m = subdivideMidpoint(*m);
+  if (m && spec.subdivisions > 0) {  // gr::subdivideMidpoint: 1-to-4, old vertices keep their indices
+    gr::Expected<gr::Subdivision> fine = gr::subdivideMidpoint(*m, spec.subdivisions);
+    m = fine ? gr::Expected<gr::TriMesh>(std::move(fine->mesh)) : gr::Expected<gr::TriMesh>(fine.status());
+  }
   if (!m) {
     state.SkipWithError(("mesh " + std::string(spec.name) + ": " + m.status().message).c_str());
     return nullptr;

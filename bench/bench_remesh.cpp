@@ -43,6 +43,7 @@
 #include "core/geodesic_delaunay.h"
 #include "core/metric.h"
 #include "core/tri_mesh.h"
+#include "core/subdivide.h"
 #include "core/vcg_mesh.h"
 
 namespace {
@@ -66,33 +67,6 @@ double threadSeconds() {
 
 // ------------------------------------------------------------------------------------------------
 // Meshes
-
-/// 1-to-4 midpoint subdivision (as in bench_fast_marching.cpp): one new vertex per edge, shared
-/// through oppositeCorner; the old vertices keep their indices. Needs no non-manifold edge.
-gr::Expected<gr::TriMesh> subdivideMidpoint(const gr::TriMesh& m) {
-  if (m.topology.nonManifoldEdges > 0) return gr::nonManifold("midpoint subdivision needs a manifold mesh");
-  const int nc = 3 * m.faceCount();
-  std::vector<gr::Vec3> positions = m.positions;
-  std::vector<int> mid(nc, -1);  // per corner: the new vertex on its opposite edge
-  for (int c = 0; c < nc; ++c) {
-    if (mid[c] >= 0) continue;
-    mid[c] = static_cast<int>(positions.size());
-    positions.push_back(0.5 * (m.positions[m.vertex(gr::TriMesh::next(c))] +
-                               m.positions[m.vertex(gr::TriMesh::prev(c))]));
-    if (m.oppositeCorner[c] >= 0) mid[m.oppositeCorner[c]] = mid[c];
-  }
-  std::vector<gr::Tri> triangles;
-  triangles.reserve(4 * static_cast<size_t>(m.faceCount()));
-  for (int f = 0; f < m.faceCount(); ++f) {
-    const gr::Tri& t = m.triangles[f];
-    const int bc = mid[3 * f], ca = mid[3 * f + 1], ab = mid[3 * f + 2];
-    triangles.push_back({t[0], ab, ca});
-    triangles.push_back({ab, t[1], bc});
-    triangles.push_back({ca, bc, t[2]});
-    triangles.push_back({ab, bc, ca});
-  }
-  return gr::buildTriMesh(std::move(positions), std::move(triangles));
-}
 
 struct MeshSpec {
   const char* name;
@@ -132,7 +106,10 @@ BenchMesh* getMesh(benchmark::State& state, const MeshSpec& spec) {
   auto& slot = cache[spec.name];
   if (slot) return slot.get();
   gr::Expected<gr::TriMesh> m = gr::loadTriMesh(std::string(GR_MESH_DIR) + "/" + spec.file);
-  for (int i = 0; m && i < spec.subdivisions; ++i) m = subdivideMidpoint(*m);
+  if (m && spec.subdivisions > 0) {  // gr::subdivideMidpoint: 1-to-4, old vertices keep their indices
+    gr::Expected<gr::Subdivision> fine = gr::subdivideMidpoint(*m, spec.subdivisions);
+    m = fine ? gr::Expected<gr::TriMesh>(std::move(fine->mesh)) : gr::Expected<gr::TriMesh>(fine.status());
+  }
   if (!m) {
     state.SkipWithError(("mesh " + std::string(spec.name) + ": " + m.status().message).c_str());
     return nullptr;

@@ -1,7 +1,6 @@
 #include "core/subdivide.h"
 
 #include <string>
-#include <unordered_map>
 
 namespace gr {
 namespace {
@@ -28,48 +27,48 @@ Vec3 baryIn(const TriMesh& original, int face, const SurfacePoint& o) {
 
 Expected<Subdivision> subdivideMidpoint(const TriMesh& mesh, int levels) {
   if (levels < 0) return invalidInput("the number of subdivision levels must be >= 0, got " + std::to_string(levels));
+  if (mesh.topology.nonManifoldEdges > 0)
+    return nonManifold("midpoint subdivision needs a mesh without non-manifold edges (" +
+                       std::to_string(mesh.topology.nonManifoldEdges) + " found)");
   Subdivision s;
-  std::vector<Vec3> positions = mesh.positions;
-  std::vector<Tri> triangles = mesh.triangles;
-  std::vector<int> originalFace(triangles.size());
-  for (size_t f = 0; f < triangles.size(); ++f) originalFace[f] = static_cast<int>(f);
-  s.origin.resize(positions.size());
+  s.mesh = mesh;
+  s.origin.resize(mesh.vertexCount());
   for (int v = 0; v < mesh.vertexCount(); ++v) s.origin[v] = SurfacePoint::atVertex(v);
+  std::vector<int> originalFace(mesh.faceCount());
+  for (int f = 0; f < mesh.faceCount(); ++f) originalFace[f] = f;
 
   for (int level = 0; level < levels; ++level) {
-    std::unordered_map<long long, int> midpointOf;
-    std::vector<Tri> next;
-    std::vector<int> nextOriginal;
-    next.reserve(4 * triangles.size());
-    nextOriginal.reserve(4 * triangles.size());
-    const long long n = static_cast<long long>(positions.size()) + 3 * static_cast<long long>(triangles.size());
-    for (size_t f = 0; f < triangles.size(); ++f) {
-      const Tri& t = triangles[f];
-      const int of = originalFace[f];
-      int m[3];
-      for (int k = 0; k < 3; ++k) {
-        const int a = t[k], b = t[(k + 1) % 3];
-        const long long key = std::min(a, b) * n + std::max(a, b);
-        auto it = midpointOf.find(key);
-        if (it == midpointOf.end()) {
-          positions.push_back(0.5 * (positions[a] + positions[b]));
-          s.origin.push_back(SurfacePoint::inFace(of, 0.5 * (baryIn(mesh, of, s.origin[a]) + baryIn(mesh, of, s.origin[b]))));
-          it = midpointOf.emplace(key, static_cast<int>(positions.size()) - 1).first;
-        }
-        m[k] = it->second;
-      }
-      next.push_back({t[0], m[0], m[2]});
-      next.push_back({t[1], m[1], m[0]});
-      next.push_back({t[2], m[2], m[1]});
-      next.push_back({m[0], m[1], m[2]});
-      for (int k = 0; k < 4; ++k) nextOriginal.push_back(of);
+    const TriMesh& m = s.mesh;
+    const int nc = 3 * m.faceCount();
+    std::vector<Vec3> positions = m.positions;
+    std::vector<int> mid(nc, -1);  // per corner: the new vertex on its opposite edge
+    for (int c = 0; c < nc; ++c) {
+      if (mid[c] >= 0) continue;
+      const int a = m.vertex(TriMesh::next(c)), b = m.vertex(TriMesh::prev(c));
+      const int of = originalFace[TriMesh::face(c)];
+      mid[c] = static_cast<int>(positions.size());
+      positions.push_back(0.5 * (m.positions[a] + m.positions[b]));
+      s.origin.push_back(SurfacePoint::inFace(of, 0.5 * (baryIn(mesh, of, s.origin[a]) + baryIn(mesh, of, s.origin[b]))));
+      if (m.oppositeCorner[c] >= 0) mid[m.oppositeCorner[c]] = mid[c];
     }
-    triangles.swap(next);
+    std::vector<Tri> triangles;
+    std::vector<int> nextOriginal;
+    triangles.reserve(4 * static_cast<size_t>(m.faceCount()));
+    nextOriginal.reserve(4 * static_cast<size_t>(m.faceCount()));
+    for (int f = 0; f < m.faceCount(); ++f) {
+      const Tri& t = m.triangles[f];
+      const int bc = mid[3 * f], ca = mid[3 * f + 1], ab = mid[3 * f + 2];
+      triangles.push_back({t[0], ab, ca});
+      triangles.push_back({ab, t[1], bc});
+      triangles.push_back({ca, bc, t[2]});
+      triangles.push_back({ab, bc, ca});
+      for (int k = 0; k < 4; ++k) nextOriginal.push_back(originalFace[f]);
+    }
+    Expected<TriMesh> built = buildTriMesh(std::move(positions), std::move(triangles));
+    if (!built) return built.status();
+    s.mesh = std::move(built).value();
     originalFace.swap(nextOriginal);
   }
-  Expected<TriMesh> built = buildTriMesh(std::move(positions), std::move(triangles));
-  if (!built) return built.status();
-  s.mesh = std::move(built).value();
   return s;
 }
 

@@ -22,7 +22,8 @@ struct Subdivision {
   std::vector<SurfacePoint> origin;
 };
 
-/// levels >= 0 (0 returns a copy); fails (InvalidInput) on a negative level count.
+/// levels >= 0 (0 returns a copy). Fails with InvalidInput on a negative level count, and
+/// NonManifold on non-manifold edges. New vertices are numbered by corner, level by level.
 Expected<Subdivision> subdivideMidpoint(const TriMesh& mesh, int levels);
 
 }  // namespace gr

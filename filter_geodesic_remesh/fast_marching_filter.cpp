@@ -5,17 +5,12 @@
 #include <string>
 
 #include "core/fast_marching.h"
+#include "filter_geodesic_remesh/filter_support.h"
 #include "filter_geodesic_remesh/parameter_names.h"
 #include "vcg_adapters/cmesho_adapter.h"
 
 namespace gr::filters {
 namespace {
-
-std::string fmt(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
 
 /// The metric asked for by the parameters: P = 1, or P = 1 / quality.
 Expected<Metric> metricFromParameters(const MeshModel& mm, const adapters::CoreView& view, bool useQuality) {
@@ -47,60 +42,59 @@ void declareFastMarching(const MeshModel& mesh, RichParameterList& params) {
 
 Status applyFastMarching(MeshDocument& doc, const RichParameterList& params, FilterContext& ctx) {
   const auto start = std::chrono::steady_clock::now();
-  MeshModel* mm = doc.mm();
-  if (mm == nullptr) return invalidInput("there is no mesh to work on");
-  CMeshO& m = mm->cm;
-
   // Compute, with no change to the document...
-  Expected<adapters::CoreView> view = adapters::toCore(m);
-  if (!view) return view.status();
-  const Topology& topology = view->mesh.topology;
+  Expected<CurrentMesh> current = currentMesh(doc);
+  if (!current) return current.status();
+  MeshModel* mm = current->model;
+  CMeshO& m = mm->cm;
+  const adapters::CoreView& view = current->view;
+  const Topology& topology = view.mesh.topology;
   if (topology.nonManifoldEdges > 0)
     return nonManifold("the mesh has " + std::to_string(topology.nonManifoldEdges) +
                        " non-manifold edges (shared by three or more faces); fast marching needs at most two "
                        "faces per edge. Run 'Repair non Manifold Edges by removing faces' first.");
-  const std::vector<int> sources = adapters::selectedVertices(m, *view);
+  const std::vector<int> sources = adapters::selectedVertices(m, view);
   if (sources.empty())
     return invalidInput("no vertex is selected: select the source vertices first (for example with "
                         "'Conditional Vertex Selection')");
   const bool useQuality = params.getBool(param::kUseQualityAsSpeed);
-  Expected<Metric> metric = metricFromParameters(*mm, *view, useQuality);
+  Expected<Metric> metric = metricFromParameters(*mm, view, useQuality);
   if (!metric) return metric.status();
   const double maxDistance = params.getAbsPerc(param::kMaxDistance);
   if (!std::isfinite(maxDistance) || maxDistance < 0.0)
-    return invalidInput("MaxDistance must be >= 0 (0 = no limit), got " + fmt(maxDistance));
+    return invalidInput("MaxDistance must be >= 0 (0 = no limit), got " + formatNumber(maxDistance));
   FastMarchingParams fmParams;
   if (maxDistance > 0.0) fmParams.maxDistance = maxDistance;
   const int colorBy = params.getEnum(param::kColorBy);
   if (colorBy != int(ColorBy::Distance) && colorBy != int(ColorBy::VoronoiRegion))
     return invalidInput("ColorBy must be 0 (Distance) or 1 (Voronoi region), got " + std::to_string(colorBy));
 
-  Expected<FastMarchingResult> result = fastMarching(view->mesh, *metric, sources, fmParams, ctx.progress);
+  Expected<FastMarchingResult> result = fastMarching(view.mesh, *metric, sources, fmParams, ctx.progress);
   if (!result) return result.status();
 
   // ...then commit.
-  adapters::writeVertexQuality(m, *view, result->distance, -1.0);
+  adapters::writeVertexQuality(m, view, result->distance, -1.0);
   if (colorBy == int(ColorBy::Distance))
-    adapters::colorByRamp(m, *view, result->distance, 0.0, result->maxDistance);
+    adapters::colorByRamp(m, view, result->distance, 0.0, result->maxDistance);
   else
-    adapters::colorByLabel(m, *view, result->nearestSource, static_cast<int>(sources.size()));
+    adapters::colorByLabel(m, view, result->nearestSource, static_cast<int>(sources.size()));
   mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
 
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  const int unreached = view->mesh.vertexCount() - result->reachedCount();
+  const int unreached = view.mesh.vertexCount() - result->reachedCount();
   ctx.log("Fast marching from " + std::to_string(sources.size()) + " selected vertices, speed " +
           (useQuality ? "= vertex quality" : "1") +
-          (fmParams.maxDistance < kUnreached ? ", max distance " + fmt(fmParams.maxDistance) : std::string()));
-  ctx.log("Reached " + std::to_string(result->reachedCount()) + " of " + std::to_string(view->mesh.vertexCount()) +
-          " vertices; maximum distance " + fmt(result->maxDistance));
+          (fmParams.maxDistance < kUnreached ? ", max distance " + formatNumber(fmParams.maxDistance) : std::string()));
+  ctx.log("Reached " + std::to_string(result->reachedCount()) + " of " + std::to_string(view.mesh.vertexCount()) +
+          " vertices; maximum distance " + formatNumber(result->maxDistance));
   if (unreached > 0)
     ctx.warn(std::to_string(unreached) + " vertices were not reached (other connected components, or beyond "
              "MaxDistance); their quality is -1");
   if (topology.nonManifoldVertices > 0)
     ctx.warn("the mesh has " + std::to_string(topology.nonManifoldVertices) +
              " non-manifold vertices; fronts cross them through the vertex only");
-  ctx.log("Time: " + fmt(ms) + " ms");
+  ctx.log("Time: " + formatNumber(ms) + " ms");
   return Status::ok();
 }
 

@@ -8,20 +8,11 @@
 #include "core/farthest_point_sampling.h"
 #include "core/geodesic_delaunay.h"
 #include "core/subdivide.h"
+#include "filter_geodesic_remesh/filter_support.h"
 #include "filter_geodesic_remesh/parameter_names.h"
 #include "vcg_adapters/cmesho_adapter.h"
 
 namespace gr::filters {
-namespace {
-
-std::string fmt(double x, const char* spec = "%.4g") {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, spec, x);
-  return buf;
-}
-
-}  // namespace
-
 void declareUniformRemesh(const MeshModel& mesh, RichParameterList& params) {
   const float diag = mesh.cm.bbox.IsNull() ? 1.0f : mesh.cm.bbox.Diag();
   const FpsParams defaults;
@@ -47,14 +38,13 @@ void declareUniformRemesh(const MeshModel& mesh, RichParameterList& params) {
 
 Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, FilterContext& ctx) {
   const auto start = std::chrono::steady_clock::now();
-  MeshModel* mm = doc.mm();
-  if (mm == nullptr) return invalidInput("there is no mesh to work on");
-  CMeshO& m = mm->cm;
-
   // Compute, with no change to the document...
-  Expected<adapters::CoreView> view = adapters::toCore(m);
-  if (!view) return view.status();
-  const TriMesh& mesh = view->mesh;
+  Expected<CurrentMesh> current = currentMesh(doc);
+  if (!current) return current.status();
+  MeshModel* mm = current->model;
+  CMeshO& m = mm->cm;
+  const adapters::CoreView& view = current->view;
+  const TriMesh& mesh = view.mesh;
   const Topology& topology = mesh.topology;
   if (!topology.isManifold())
     return nonManifold("the mesh has " + std::to_string(topology.nonManifoldEdges) + " non-manifold edges and " +
@@ -94,11 +84,11 @@ Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, Fi
   if (copyQuality) out->updateDataMask(MeshModel::MM_VERTQUALITY);
   std::vector<SurfacePoint> origin(result->sampleVertex.size());
   for (size_t i = 0; i < origin.size(); ++i) origin[i] = fine->origin[result->sampleVertex[i]];
-  adapters::writeMesh(result->mesh, out->cm, m, *view, origin, copyColor, copyQuality);
+  adapters::writeMesh(result->mesh, out->cm, m, view, origin, copyColor, copyQuality);
   if (labelInput) {  // the input's vertices keep their indices in the subdivision
     const std::vector<int> region(result->region.begin(), result->region.begin() + mesh.vertexCount());
-    adapters::writeVertexQuality(m, *view, std::vector<double>(region.begin(), region.end()), -1.0);
-    adapters::colorByLabel(m, *view, region, result->mesh.vertexCount());
+    adapters::writeVertexQuality(m, view, std::vector<double>(region.begin(), region.end()), -1.0);
+    adapters::colorByLabel(m, view, region, result->mesh.vertexCount());
     mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
   }
 
@@ -113,18 +103,18 @@ Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, Fi
           std::to_string(result->mesh.faceCount()) + " faces on the new layer '" + label.toStdString() + "'");
   ctx.log("Samples: " + std::to_string(samples->samples.size()) + " by farthest-point sampling, " +
           std::to_string(result->addedSamples) + " added to make the triangulation valid (" +
-          std::to_string(result->repairRounds) + " rounds); covering radius " + fmt(samples->coveringRadius) +
+          std::to_string(result->repairRounds) + " rounds); covering radius " + formatNumber(samples->coveringRadius, "%.4g") +
           (result->flippedEdges > 0 ? "; " + std::to_string(result->flippedEdges) + " flat triangles fixed by edge flips"
                                     : std::string()));
   ctx.log("Topology kept: " + std::to_string(result->mesh.topology.components) + " components, genus " +
           std::to_string(result->mesh.topology.genus) + ", " + std::to_string(result->mesh.topology.boundaryLoops) +
           " boundary loops");
-  ctx.log("Angles: standard deviation " + fmt(angles.stdDegrees, "%.1f") + " deg, smallest " +
-          fmt(angles.minDegrees, "%.1f") + " deg, " + fmt(100 * angles.shareMinBelow30, "%.2f") +
+  ctx.log("Angles: standard deviation " + formatNumber(angles.stdDegrees, "%.1f") + " deg, smallest " +
+          formatNumber(angles.minDegrees, "%.1f") + " deg, " + formatNumber(100 * angles.shareMinBelow30, "%.2f") +
           " % of triangles with an angle under 30 deg");
-  ctx.log("Hausdorff distance to the input (one-sided): " + fmt(100 * hausdorff.max / diag, "%.3f") +
-          " % of the bounding-box diagonal, RMS " + fmt(100 * hausdorff.rms / diag, "%.3f") + " %");
-  ctx.log("Time: " + fmt(ms) + " ms");
+  ctx.log("Hausdorff distance to the input (one-sided): " + formatNumber(100 * hausdorff.max / diag, "%.3f") +
+          " % of the bounding-box diagonal, RMS " + formatNumber(100 * hausdorff.rms / diag, "%.3f") + " %");
+  ctx.log("Time: " + formatNumber(ms, "%.4g") + " ms");
   return Status::ok();
 }
 

@@ -1,0 +1,24 @@
+// Small pieces every filter uses: the current mesh as the core sees it, and number formatting
+// for the log.
+#pragma once
+
+#include <common/interfaces.h>
+
+#include <string>
+
+#include "core/status.h"
+#include "vcg_adapters/cmesho_adapter.h"
+
+namespace gr::filters {
+
+/// The document's current mesh and its core view (fails on no mesh, no faces, NaN, bad faces).
+struct CurrentMesh {
+  MeshModel* model = nullptr;
+  adapters::CoreView view;
+};
+Expected<CurrentMesh> currentMesh(MeshDocument& doc);
+
+/// printf-style formatting of one number, for log lines.
+std::string formatNumber(double x, const char* spec = "%.6g");
+
+}  // namespace gr::filters

@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 
+#include "core/delaunay_flips.h"
 #include "core/fast_marching.h"
 
 namespace gr {
@@ -38,62 +39,6 @@ Dual buildDual(const TriMesh& mesh, const std::vector<int>& label, int cellCount
   for (int c = 0; c < cellCount; ++c)
     if (bad[c]) d.badCells.push_back(c);
   return d;
-}
-
-/// Largest angle of face f, in degrees, and the corner where it is.
-double largestAngle(const TriMesh& m, int f, int* corner) {
-  double largest = -1.0;
-  for (int k = 0; k < 3; ++k) {
-    const Vec3 u = m.positions[m.triangles[f][(k + 1) % 3]] - m.positions[m.triangles[f][k]];
-    const Vec3 w = m.positions[m.triangles[f][(k + 2) % 3]] - m.positions[m.triangles[f][k]];
-    const double nu = u.norm(), nw = w.norm();
-    const double a = (nu > 0 && nw > 0) ? std::acos(std::clamp(u.dot(w) / (nu * nw), -1.0, 1.0)) * 180.0 / M_PI : 180.0;
-    if (a > largest) {
-      largest = a;
-      *corner = 3 * f + k;
-    }
-  }
-  return largest;
-}
-
-/// Flat triangles (an angle above 179 degrees, e.g. three consecutive samples on a straight
-/// boundary) get their longest edge flipped when that edge is interior, the flip creates no
-/// duplicate edge, and both new triangles face the way the old ones did. Topology is unchanged;
-/// the mesh is rebuilt if anything was flipped. Returns the number of flips.
-int flipFlatTriangles(TriMesh& m) {
-  std::vector<Tri> tris = m.triangles;
-  std::set<std::pair<int, int>> edges;
-  for (const Tri& t : tris)
-    for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
-  std::vector<char> touched(tris.size(), 0);
-  int flips = 0;
-  for (int f = 0; f < m.faceCount(); ++f) {
-    int c = -1;
-    if (touched[f] || largestAngle(m, f, &c) < 179.0) continue;
-    const int o = m.oppositeCorner[c];
-    if (o < 0 || touched[TriMesh::face(o)]) continue;
-    const int x = m.vertex(c), a = m.vertex(TriMesh::next(c)), b = m.vertex(TriMesh::prev(c)), y = m.vertex(o);
-    if (x == y || edges.count(std::minmax(x, y))) continue;
-    const Vec3 &px = m.positions[x], &pa = m.positions[a], &pb = m.positions[b], &py = m.positions[y];
-    const Vec3 before = (pa - px).cross(pb - px) + (pb - py).cross(pa - py);  // (x,a,b) + (y,b,a)
-    const Vec3 n1 = (pa - px).cross(py - px), n2 = (py - px).cross(pb - px);  // (x,a,y), (x,y,b)
-    if (n1.dot(before) <= 0.0 || n2.dot(before) <= 0.0 || n1.dot(n2) <= 0.0) continue;
-    tris[f] = {x, a, y};
-    tris[TriMesh::face(o)] = {x, y, b};
-    edges.erase(std::minmax(a, b));
-    edges.insert(std::minmax(x, y));
-    touched[f] = touched[TriMesh::face(o)] = 1;
-    ++flips;
-  }
-  if (flips > 0) {
-    Expected<TriMesh> rebuilt = buildTriMesh(m.positions, tris);
-    if (rebuilt && rebuilt->topology.isManifold() && rebuilt->topology.genus == m.topology.genus &&
-        rebuilt->topology.boundaryLoops == m.topology.boundaryLoops && rebuilt->topology.inconsistentEdges == 0)
-      m = std::move(rebuilt).value();
-    else
-      flips = 0;
-  }
-  return flips;
 }
 
 /// Cells at the defects of a dual mesh: non-manifold edges and vertices, and boundary edges that
@@ -174,11 +119,7 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<int>
                                 t.boundaryLoops == mesh.topology.boundaryLoops && t.isolatedVertices == 0 &&
                                 t.inconsistentEdges == 0 && t.isManifold();
       if (bad.empty() && sameTopology) {
-        for (int pass = 0; pass < 5; ++pass) {  // adjacent flat triangles need more than one pass
-          const int flips = flipFlatTriangles(*out);
-          r.flippedEdges += flips;
-          if (flips == 0) break;
-        }
+        if (params.delaunayFlips) r.flippedEdges = flipToDelaunay(*out, params.flips).flips;
         r.mesh = std::move(out).value();
         r.sampleVertex = samples;
         r.region = label;

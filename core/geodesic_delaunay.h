@@ -16,8 +16,8 @@
 // (an output edge with three or more triangles, a non-manifold vertex, a triangle twice, a
 // topology other than the input's), the vertex farthest from the samples inside the offending
 // cells becomes a new sample, the Voronoi diagram is updated incrementally, and the dual is
-// rebuilt; the number of added samples is reported. Last, triangles with an angle above 179
-// degrees (three samples in a row on a straight boundary) get their longest edge flipped.
+// rebuilt; the number of added samples is reported. Last, edges that are not locally Delaunay
+// are flipped (delaunay_flips.h) where that keeps features, orientation and topology.
 // Boundaries: output boundary edges must join samples lying on input boundaries, and a cell
 // that reaches a boundary must have its sample on it (else its farthest boundary vertex is
 // added); the output then has the input's boundary loops.
@@ -26,6 +26,7 @@
 
 #include <vector>
 
+#include "core/delaunay_flips.h"
 #include "core/fast_marching.h"
 #include "core/metric.h"
 #include "core/progress.h"
@@ -36,6 +37,10 @@ namespace gr {
 
 struct DelaunayParams {
   int maxRepairRounds = 50;  ///< rounds of sample insertion before giving up (NotConverged)
+  /// Last, flip edges of the valid dual that are not locally Delaunay (delaunay_flips.h): the
+  /// discrete Voronoi diagram picks the diagonal of nearly cocircular samples at random.
+  bool delaunayFlips = true;
+  DelaunayFlipParams flips;  ///< feature angle and tolerance of those flips
 };
 
 struct DelaunayResult {
@@ -43,7 +48,7 @@ struct DelaunayResult {
   std::vector<int> sampleVertex;    ///< per output vertex, the input vertex it sits on
   int addedSamples = 0;             ///< samples inserted by the repair
   int repairRounds = 0;
-  int flippedEdges = 0;             ///< flat triangles (an angle above 179 deg) fixed by a flip
+  int flippedEdges = 0;             ///< edges flipped to make the result locally Delaunay
   std::vector<int> region;          ///< per input vertex, its output vertex (Voronoi cell)
 };
 

@@ -1,0 +1,120 @@
+#include "core/delaunay_flips.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_set>
+
+namespace gr {
+namespace {
+
+std::uint64_t edgeKey(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+}
+
+/// Angle at p of the triangle (p, q, r), in radians.
+double angleAt(const Vec3& p, const Vec3& q, const Vec3& r) {
+  const Vec3 u = q - p, w = r - p;
+  return std::atan2(u.cross(w).norm(), u.dot(w));
+}
+
+/// Unit normal of (p, q, r), or zero when the triangle is degenerate (area tiny against its
+/// squared longest edge).
+Vec3 unitNormal(const Vec3& p, const Vec3& q, const Vec3& r) {
+  const Vec3 n = (q - p).cross(r - p);
+  const double scale = std::max({(q - p).squaredNorm(), (r - q).squaredNorm(), (p - r).squaredNorm()});
+  const double len = n.norm();
+  return len > 1e-12 * scale ? Vec3(n / len) : Vec3::Zero();
+}
+
+}  // namespace
+
+DelaunayFlipResult flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& params) {
+  DelaunayFlipResult r;
+  if (!mesh.topology.isManifold() || mesh.topology.inconsistentEdges > 0 || mesh.faceCount() == 0) return r;
+  std::vector<Tri>& tris = mesh.triangles;
+  std::vector<int>& opp = mesh.oppositeCorner;
+  const std::vector<Vec3>& pos = mesh.positions;
+  const double cosFeature = std::cos(params.featureAngleDegrees * M_PI / 180.0);
+  const double tolerance = params.toleranceDegrees * M_PI / 180.0;
+  const auto V = [&](int c) { return tris[c / 3][c % 3]; };
+
+  std::unordered_set<std::uint64_t> edges;
+  edges.reserve(3 * tris.size());
+  for (const Tri& t : tris)
+    for (int k = 0; k < 3; ++k) edges.insert(edgeKey(t[k], t[(k + 1) % 3]));
+
+  // Work list of corners; each interior edge is checked from the corner of its lower-numbered side.
+  std::vector<int> work;
+  std::vector<char> queued(3 * tris.size(), 0);
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
+    if (opp[c] >= 0 && c < opp[c]) {
+      work.push_back(c);
+      queued[c] = 1;
+    }
+  const auto enqueue = [&](int c) {
+    if (opp[c] < 0) return;
+    const int k = std::min(c, opp[c]);
+    if (!queued[k]) {
+      queued[k] = 1;
+      work.push_back(k);
+    }
+  };
+  const long maxFlips = long(params.maxFlipsPerFace) * mesh.faceCount();
+  while (!work.empty() && r.flips < maxFlips) {
+    const int c = work.back();
+    work.pop_back();
+    queued[c] = 0;
+    const int o = opp[c];
+    if (o < 0) continue;
+    // Faces (x, a, b) and (y, b, a) share the edge (a, b); x faces it in one, y in the other.
+    const int x = V(c), a = V(TriMesh::next(c)), b = V(TriMesh::prev(c)), y = V(o);
+    if (x == y) continue;
+    const Vec3 &px = pos[x], &pa = pos[a], &pb = pos[b], &py = pos[y];
+    const double facing = angleAt(px, pa, pb) + angleAt(py, pb, pa);
+    if (facing <= M_PI + tolerance) continue;  // locally Delaunay
+    if (edges.count(edgeKey(x, y))) continue;
+    // Feature and orientation checks: both old and new pairs nearly coplanar, same side up.
+    const Vec3 n1 = unitNormal(px, pa, pb), n2 = unitNormal(py, pb, pa);
+    const Vec3 m1 = unitNormal(px, pa, py), m2 = unitNormal(px, py, pb);
+    if (m1.isZero() || m2.isZero()) continue;
+    if (m1.dot(m2) < cosFeature) continue;
+    if (!n1.isZero() && !n2.isZero() && n1.dot(n2) < cosFeature) continue;
+    const Vec3 before = (pa - px).cross(pb - px) + (pb - py).cross(pa - py);
+    if (m1.dot(before) <= 0.0 || m2.dot(before) <= 0.0) continue;
+    // The flip must make the edge Delaunay: the new facing angles (at a and b) sum to less.
+    if (angleAt(pa, py, px) + angleAt(pb, px, py) >= facing - tolerance) continue;
+
+    // Outer corners: the ones facing x->a (corner of b in f), b->x (a in f), a->y (b in g), y->b (a in g).
+    const int f = c / 3, g = o / 3;
+    const int oXA = opp[TriMesh::prev(c)], oBX = opp[TriMesh::next(c)];
+    const int oAY = opp[TriMesh::next(o)], oYB = opp[TriMesh::prev(o)];
+    // New faces: f = (x, a, y), g = (y, b, x).
+    tris[f] = {x, a, y};
+    tris[g] = {y, b, x};
+    const int f0 = 3 * f, g0 = 3 * g;
+    const auto link = [&](int corner, int other) {
+      opp[corner] = other;
+      if (other >= 0) opp[other] = corner;
+    };
+    link(f0 + 0, oAY);     // x faces a->y
+    link(f0 + 1, g0 + 1);  // a and b face the new diagonal
+    link(f0 + 2, oXA);     // y faces x->a
+    link(g0 + 0, oBX);     // y faces b->x
+    link(g0 + 2, oYB);     // x faces y->b
+    edges.erase(edgeKey(a, b));
+    edges.insert(edgeKey(x, y));
+    ++r.flips;
+    for (int k : {f0, f0 + 2, g0, g0 + 2}) enqueue(k);
+  }
+  if (r.flips > 0) {
+    Expected<TriMesh> rebuilt = buildTriMesh(std::move(mesh.positions), std::move(tris));
+    mesh = std::move(rebuilt).value();  // same vertices, manifold faces: cannot fail
+  }
+  return r;
+}
+
+}  // namespace gr

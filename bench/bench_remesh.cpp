@@ -24,6 +24,7 @@
 
 #include <time.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -149,10 +150,11 @@ struct OursRun {
 };
 
 /// The filter's pipeline on a fresh engine; nullopt after SkipWithError.
-std::optional<OursRun> runOurs(benchmark::State& state, const BenchMesh& bm, int target) {
+std::optional<OursRun> runOurs(benchmark::State& state, const BenchMesh& bm, int target, bool subVertex) {
   const gr::Metric metric = gr::Metric::uniform();
   gr::FpsParams params;
   params.targetCount = target;
+  params.subVertexPlacement = subVertex;
   OursRun run;
   const double t0 = threadSeconds();
   gr::FastMarcher marcher(bm.tri, metric);
@@ -163,7 +165,7 @@ std::optional<OursRun> runOurs(benchmark::State& state, const BenchMesh& bm, int
     state.SkipWithError(("sampling: " + s.status().message).c_str());
     return std::nullopt;
   }
-  gr::Expected<gr::DelaunayResult> d = gr::geodesicDelaunay(marcher, std::move(s->samples));
+  gr::Expected<gr::DelaunayResult> d = gr::geodesicDelaunay(marcher, std::move(s->points));
   const double t3 = threadSeconds();
   if (!d) {
     state.SkipWithError(("triangulation: " + d.status().message).c_str());
@@ -195,17 +197,21 @@ void setQualityCounters(benchmark::State& state, const BenchMesh& bm, const gr::
   c["in_angle_std"] = bm.angles.stdDegrees;
   c["in_angle_min"] = bm.angles.minDegrees;
   c["in_lt30_pct"] = 100.0 * bm.angles.shareMinBelow30;
-  c["hausdorff_pct"] = 100.0 * gr::surfaceDistance(out, bm.tri).max / bm.diagonal;
+  // One-sided (output to input), and two-sided with the RMS over both directions' samples.
+  const gr::SurfaceDistance there = gr::surfaceDistance(out, bm.tri), back = gr::surfaceDistance(bm.tri, out);
+  c["hausdorff_pct"] = 100.0 * there.max / bm.diagonal;
+  c["hausdorff2_pct"] = 100.0 * std::max(there.max, back.max) / bm.diagonal;
+  c["rms2_pct"] = 100.0 * std::sqrt(0.5 * (there.rms * there.rms + back.rms * back.rms)) / bm.diagonal;
 }
 
-void BM_Ours(benchmark::State& state, const Case& c) {
+void runOursCase(benchmark::State& state, const Case& c, bool subVertex) {
   BenchMesh* bm = getMesh(state, c.mesh);
   if (!bm) return;
   const int target = targetCount(c, *bm);
   double engine = 0, sampling = 0, delaunay = 0;
   std::optional<OursRun> run;
   for (auto _ : state) {
-    run = runOurs(state, *bm, target);
+    run = runOurs(state, *bm, target, subVertex);
     if (!run) return;
     engine += run->engineSeconds;
     sampling += run->samplingSeconds;
@@ -218,8 +224,12 @@ void BM_Ours(benchmark::State& state, const Case& c) {
   state.counters["added"] = run->result.addedSamples;
   state.counters["repair_rounds"] = run->result.repairRounds;
   setQualityCounters(state, *bm, run->result.mesh, target);
-  oursVertexCount()[c.key()] = run->result.mesh.vertexCount();
+  if (!subVertex) oursVertexCount()[c.key()] = run->result.mesh.vertexCount();
 }
+
+void BM_Ours(benchmark::State& state, const Case& c) { runOursCase(state, c, false); }
+/// The same with FpsParams::subVertexPlacement (the filter's SubVertexPlacement option).
+void BM_OursSubVertex(benchmark::State& state, const Case& c) { runOursCase(state, c, true); }
 
 // ------------------------------------------------------------------------------------------------
 // CGAL isotropic remeshing
@@ -317,6 +327,7 @@ void registerAll() {
   for (const Case& c : kCases) {
     add("Ours", BM_Ours, c);  // before Cgal: it records the vertex count CGAL is calibrated to
     add("Cgal", BM_Cgal, c);
+    if (c.mesh.subdivisions == 0) add("OursSubVertex", BM_OursSubVertex, c);
   }
 }
 

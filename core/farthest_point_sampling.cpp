@@ -10,6 +10,64 @@
 namespace gr {
 namespace {
 
+/// The point near interior vertex v where the model of the fronts (see the header) is largest,
+/// searched on a barycentric lattice of the faces around v and the faces across their outer
+/// edges. `samplePosition` holds the position of each label's sample. Returns v itself when no
+/// lattice point beats it; *u receives the model's value at the point.
+SurfacePoint farthestPointNear(const FastMarcher& marcher, int v, const std::vector<Vec3>& samplePosition, double* u) {
+  const TriMesh& mesh = marcher.mesh();
+  const std::vector<double>& U = marcher.distance();
+  const std::vector<int>& label = marcher.label();
+  constexpr int kMaxFaces = 64, kMaxVertices = 64;
+  int faces[kMaxFaces], nf = 0;
+  int verts[kMaxVertices], nvtx = 0;
+  const auto addVertex = [&](int w) {
+    for (int i = 0; i < nvtx; ++i)
+      if (verts[i] == w) return;
+    if (nvtx < kMaxVertices && label[w] >= 0 && std::isfinite(U[w])) verts[nvtx++] = w;
+  };
+  for (const int* c = mesh.cornersBegin(v); c != mesh.cornersEnd(v) && nf < kMaxFaces; ++c) {
+    faces[nf++] = TriMesh::face(*c);
+    const int o = mesh.oppositeCorner[*c];
+    if (o >= 0 && nf < kMaxFaces) faces[nf++] = TriMesh::face(o);
+  }
+  for (int i = 0; i < nf; ++i)
+    for (int w : mesh.triangles[faces[i]]) addVertex(w);
+  // Per vertex of the neighbourhood: its front's offset U(w) - |w - s_L|.
+  double offset[kMaxVertices];
+  for (int i = 0; i < nvtx; ++i)
+    offset[i] = U[verts[i]] - (mesh.positions[verts[i]] - samplePosition[label[verts[i]]]).norm();
+  const auto model = [&](const Vec3& p) {
+    double best = kUnreached;
+    for (int i = 0; i < nvtx; ++i) {
+      // U_L(p) for w's front; the minimum over all w is the minimum over fronts of their
+      // estimate from the nearest-in-value vertex, a safe (low) side of the model.
+      best = std::min(best, offset[i] + (p - samplePosition[label[verts[i]]]).norm());
+    }
+    return best;
+  };
+  SurfacePoint bestPoint = SurfacePoint::atVertex(v);
+  double bestU = U[v];
+  constexpr int kLattice = 4;  // points (i, j, k) / 4: 15 per face
+  for (int i = 0; i < nf; ++i) {
+    const Tri& t = mesh.triangles[faces[i]];
+    const Vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]], &p2 = mesh.positions[t[2]];
+    for (int a = 0; a <= kLattice; ++a)
+      for (int b = 0; a + b <= kLattice; ++b) {
+        const int c = kLattice - a - b;
+        if (a == kLattice || b == kLattice || c == kLattice) continue;  // vertices: U is known there
+        const Vec3 bary(double(a) / kLattice, double(b) / kLattice, double(c) / kLattice);
+        const double m = model(bary[0] * p0 + bary[1] * p1 + bary[2] * p2);
+        if (m > bestU) {
+          bestU = m;
+          bestPoint = SurfacePoint::inFace(faces[i], bary);
+        }
+      }
+  }
+  *u = bestU;
+  return bestPoint;
+}
+
 }  // namespace
 
 Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& metric, const FpsParams& params,
@@ -68,11 +126,25 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
   const int cap = params.targetCount > 0 ? params.targetCount : usable;
   int next = first;
   double nextU = kUnreached;
+  std::vector<Vec3> samplePosition;
   for (;;) {
+    SurfacePoint point = SurfacePoint::atVertex(next);
+    if (params.subVertexPlacement && std::isfinite(nextU) && !onBoundary[next])
+      point = farthestPointNear(marcher, next, samplePosition, &nextU);
     r.samples.push_back(next);
+    r.points.push_back(point);
+    samplePosition.push_back(point.position(mesh));
     r.insertionDistance.push_back(nextU);
-    if (Status s = marcher.addSource(next, static_cast<int>(r.samples.size()) - 1); !s) return s;
+    if (Status s = marcher.addSource(point, static_cast<int>(r.samples.size()) - 1); !s) return s;
     if (Status s = marcher.propagate(); !s) return s;
+    if (point.vertex < 0 && marcher.acceptedOrder().empty()) {
+      // A point that is nearest to no vertex would have an empty Voronoi cell, and no place in
+      // the triangulation: the sample goes back to the farthest vertex (the field is unchanged).
+      r.points.back() = SurfacePoint::atVertex(next);
+      samplePosition.back() = mesh.positions[next];
+      if (Status s = marcher.addSource(next, static_cast<int>(r.samples.size()) - 1); !s) return s;
+      if (Status s = marcher.propagate(); !s) return s;
+    }
     for (int v : marcher.acceptedOrder()) (onBoundary[v] ? farthestOnBoundary : farthest).set(v, -U[v]);
     if (static_cast<int>(r.samples.size()) >= cap) break;
     if (!progress.report(double(r.samples.size()) / cap, "Farthest point sampling")) return cancelled();

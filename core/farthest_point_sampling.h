@@ -8,6 +8,12 @@
 // other component gets its lowest-numbered vertex as first sample before any component gets a
 // second one. On a mesh with boundaries, boundary vertices take precedence (boundaryPriority),
 // so each loop is sampled before the interior near it.
+// Sub-vertex placement (paper §3.1, last paragraph): the farthest vertex is only within an edge
+// length of the farthest point, which lies where three fronts meet, usually inside a face. With
+// `subVertexPlacement` the new sample moves to the point of the faces near that vertex where a
+// local model of the fronts is largest: each front L is U at its nearest vertex w plus the
+// change of the straight distance to its sample, |p - s_L| - |w - s_L|, and the fronts' minimum
+// is maximised over a barycentric lattice of those faces. Boundary samples stay on vertices.
 // Cost: O(sum of improved regions * log) - about O(V log V log n) for n samples (paper Table 2).
 #pragma once
 
@@ -29,10 +35,14 @@ struct FpsParams {
   /// Boundary vertices count as this much farther than they are (>= 1), so boundary loops are
   /// sampled first and about 1/boundaryPriority times the interior spacing apart; 1 = no priority.
   double boundaryPriority = 1.5;
+  /// Place interior samples where the fronts meet, inside faces, rather than at the farthest
+  /// vertex: samples closer to a net of the surface, better shaped triangles at high densities.
+  bool subVertexPlacement = false;
 };
 
 struct FpsResult {
-  std::vector<int> samples;      ///< vertices, in the order they were chosen
+  std::vector<int> samples;      ///< the farthest vertex at each step, in the order they were chosen
+  std::vector<SurfacePoint> points;  ///< the samples themselves: samples[i], or a point near it (subVertexPlacement)
   std::vector<double> distance;  ///< per vertex, U to the nearest sample
   std::vector<int> region;       ///< per vertex, index into `samples` (geodesic Voronoi cell)
   double coveringRadius = 0.0;   ///< largest U at the end (the next sample's distance)

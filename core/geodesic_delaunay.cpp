@@ -57,10 +57,13 @@ std::vector<int> defectCells(const TriMesh& dual, const std::vector<char>& sampl
   return {cells.begin(), cells.end()};
 }
 
-Status checkInput(const TriMesh& mesh, const std::vector<int>& samples) {
+Status checkInput(const TriMesh& mesh, const std::vector<SurfacePoint>& samples) {
   if (samples.empty()) return invalidInput("no samples were given");
-  for (int s : samples)
-    if (s < 0 || s >= mesh.vertexCount()) return invalidInput("sample vertex " + std::to_string(s) + " does not exist");
+  for (const SurfacePoint& s : samples) {
+    if (s.vertex >= mesh.vertexCount() || (s.vertex < 0 && (s.face < 0 || s.face >= mesh.faceCount())))
+      return invalidInput("sample " + (s.vertex >= 0 ? "vertex " + std::to_string(s.vertex) : "face " + std::to_string(s.face)) +
+                          " does not exist");
+  }
   if (mesh.topology.nonManifoldEdges > 0 || mesh.topology.nonManifoldVertices > 0)
     return invalidInput("the mesh is not manifold (" + std::to_string(mesh.topology.nonManifoldEdges) +
                         " non-manifold edges, " + std::to_string(mesh.topology.nonManifoldVertices) +
@@ -70,20 +73,22 @@ Status checkInput(const TriMesh& mesh, const std::vector<int>& samples) {
 
 }  // namespace
 
-Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> samples,
+Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> vertices,
                                           const DelaunayParams& params, Progress progress) {
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  std::vector<SurfacePoint> samples;
+  for (int v : vertices) samples.push_back(SurfacePoint::atVertex(v));
   if (Status s = checkInput(mesh, samples); !s) return s;
   FastMarcher marcher(mesh, metric);
-  std::sort(samples.begin(), samples.end());
-  samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
   for (size_t i = 0; i < samples.size(); ++i)
     if (Status s = marcher.addSource(samples[i], static_cast<int>(i)); !s) return s;
   if (Status s = marcher.propagate(); !s) return s;
   return geodesicDelaunay(marcher, std::move(samples), params, std::move(progress));
 }
 
-Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<int> samples, const DelaunayParams& params,
-                                          Progress progress) {
+Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<SurfacePoint> samples,
+                                          const DelaunayParams& params, Progress progress) {
   const TriMesh& mesh = marcher.mesh();
   if (Status s = checkInput(mesh, samples); !s) return s;
   std::vector<char> onBoundary(mesh.vertexCount(), 0);
@@ -99,14 +104,14 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<int>
     Dual dual = buildDual(mesh, label, cells);
     std::vector<int> bad = dual.badCells;
     std::vector<Vec3> positions(cells);
-    for (int c = 0; c < cells; ++c) positions[c] = mesh.positions[samples[c]];
+    for (int c = 0; c < cells; ++c) positions[c] = samples[c].position(mesh);
     // Components without any triangle (one cell covers a whole component) are defects too.
     Expected<TriMesh> out = dual.triangles.empty() ? Expected<TriMesh>(invalidInput("no triangle"))
                                                    : buildTriMesh(positions, dual.triangles);
     // A cell that reaches the input's boundary must have its sample on it, or the output's
     // boundary would cut across the surface.
     std::vector<char> sampleOnBoundary(cells, 0), cellOnBoundary(cells, 0);
-    for (int c = 0; c < cells; ++c) sampleOnBoundary[c] = onBoundary[samples[c]];
+    for (int c = 0; c < cells; ++c) sampleOnBoundary[c] = samples[c].vertex >= 0 && onBoundary[samples[c].vertex];
     for (int v = 0; v < mesh.vertexCount(); ++v)
       if (onBoundary[v] && label[v] >= 0) cellOnBoundary[label[v]] = 1;
     for (int c = 0; c < cells; ++c)
@@ -115,14 +120,40 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<int>
       const Topology& t = out->topology;
       const std::vector<int> defects = defectCells(*out, sampleOnBoundary);
       bad.insert(bad.end(), defects.begin(), defects.end());
+      // A sample inside a face may end up nearest to no vertex (another sample took its cell):
+      // it is left out of the output rather than repaired.
+      std::vector<int> cellSize(cells, 0);
+      for (int v = 0; v < mesh.vertexCount(); ++v)
+        if (label[v] >= 0) ++cellSize[label[v]];
+      int isolated = 0;
+      for (int v = 0; v < out->vertexCount(); ++v) isolated += out->valence(v) == 0 && cellSize[v] > 0;
       const bool sameTopology = t.components == mesh.topology.components && t.genus == mesh.topology.genus &&
-                                t.boundaryLoops == mesh.topology.boundaryLoops && t.isolatedVertices == 0 &&
+                                t.boundaryLoops == mesh.topology.boundaryLoops && isolated == 0 &&
                                 t.inconsistentEdges == 0 && t.isManifold();
       if (bad.empty() && sameTopology) {
+        if (t.isolatedVertices > 0) {  // drop the empty cells' samples, renumber the rest
+          std::vector<int> index(cells, -1);
+          std::vector<Vec3> kept;
+          for (int c = 0; c < cells; ++c)
+            if (out->valence(c) > 0) {
+              index[c] = static_cast<int>(kept.size());
+              kept.push_back(positions[c]);
+              r.samplePoint.push_back(samples[c]);
+            }
+          std::vector<Tri> tris = out->triangles;
+          for (Tri& tri : tris)
+            for (int& v : tri) v = index[v];
+          out = buildTriMesh(std::move(kept), std::move(tris));
+          r.region = label;
+          for (int& l : r.region)
+            if (l >= 0) l = index[l];
+          r.droppedSamples = cells - out->vertexCount();
+        } else {
+          r.samplePoint = samples;
+          r.region = label;
+        }
         if (params.delaunayFlips) r.flippedEdges = flipToDelaunay(*out, params.flips).flips;
         r.mesh = std::move(out).value();
-        r.sampleVertex = samples;
-        r.region = label;
         r.addedSamples = cells - initialCount;
         r.repairRounds = round;
         return r;
@@ -131,7 +162,7 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<int>
         // Valid locally but not the input's topology (e.g. a handle not captured, a component
         // with too few cells): refine the cells with the largest distance to their sample.
         for (int v = 0; v < out->vertexCount(); ++v)
-          if (out->valence(v) == 0) bad.push_back(v);
+          if (out->valence(v) == 0 && cellSize[v] > 0) bad.push_back(v);
         if (bad.empty()) {
           std::vector<double> far(cells, 0.0);
           for (int v = 0; v < mesh.vertexCount(); ++v) far[label[v]] = std::max(far[label[v]], marcher.distance()[v]);
@@ -169,15 +200,19 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<int>
     std::vector<char> isBad(cells, 0);
     for (int c : bad) isBad[c] = 1;
     for (int c : bad)
-      if (farthest[c] < 0 || marcher.distance()[farthest[c]] <= 0.0)
-        for (const int* k = mesh.cornersBegin(samples[c]); k != mesh.cornersEnd(samples[c]); ++k)
-          for (int w : {mesh.vertex(TriMesh::next(*k)), mesh.vertex(TriMesh::prev(*k))})
-            if (label[w] >= 0) isBad[label[w]] = 1;
+      if (farthest[c] < 0 || marcher.distance()[farthest[c]] <= 0.0) {
+        const SurfacePoint& p = samples[c];
+        const Tri around = p.vertex >= 0 ? Tri{p.vertex, p.vertex, p.vertex} : mesh.triangles[p.face];
+        for (int x : around)
+          for (const int* k = mesh.cornersBegin(x); k != mesh.cornersEnd(x); ++k)
+            for (int w : {mesh.vertex(TriMesh::next(*k)), mesh.vertex(TriMesh::prev(*k))})
+              if (label[w] >= 0) isBad[label[w]] = 1;
+      }
     int added = 0;
     for (int c = 0; c < cells; ++c) {
       const int v = farthest[c];
       if (!isBad[c] || v < 0 || marcher.distance()[v] <= 0.0) continue;
-      samples.push_back(v);
+      samples.push_back(SurfacePoint::atVertex(v));
       if (Status s = marcher.addSource(v, static_cast<int>(samples.size()) - 1); !s) return s;
       ++added;
     }

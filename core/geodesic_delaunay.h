@@ -45,8 +45,9 @@ struct DelaunayParams {
 
 struct DelaunayResult {
   TriMesh mesh;                     ///< output: one vertex per sample, at the sample's position
-  std::vector<int> sampleVertex;    ///< per output vertex, the input vertex it sits on
+  std::vector<SurfacePoint> samplePoint;  ///< per output vertex, the point of the input it sits on
   int addedSamples = 0;             ///< samples inserted by the repair
+  int droppedSamples = 0;           ///< samples inside faces left out: nearest to no vertex
   int repairRounds = 0;
   int flippedEdges = 0;             ///< edges flipped to make the result locally Delaunay
   std::vector<int> region;          ///< per input vertex, its output vertex (Voronoi cell)
@@ -58,8 +59,9 @@ Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& met
                                           const DelaunayParams& params = {}, Progress progress = {});
 
 /// The same on an engine that already holds the field of `samples` with labels 0..n-1 in that
-/// order (as farthestPointSampling leaves it): no propagation from scratch.
-Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<int> samples,
+/// order (as farthestPointSampling leaves it, with FpsResult::points): no propagation from
+/// scratch. Samples may lie inside faces; the ones the repair adds are vertices.
+Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<SurfacePoint> samples,
                                           const DelaunayParams& params = {}, Progress progress = {});
 
 }  // namespace gr

@@ -69,7 +69,17 @@ Expected<Subdivision> subdivideMidpoint(const TriMesh& mesh, int levels) {
     s.mesh = std::move(built).value();
     originalFace.swap(nextOriginal);
   }
+  s.originalFace = std::move(originalFace);
   return s;
+}
+
+SurfacePoint Subdivision::toOriginal(const TriMesh& original, const SurfacePoint& p) const {
+  if (p.vertex >= 0) return origin[p.vertex];
+  const int of = originalFace[p.face];
+  const Tri& t = mesh.triangles[p.face];
+  Vec3 b = Vec3::Zero();
+  for (int k = 0; k < 3; ++k) b += p.bary[k] * baryIn(original, of, origin[t[k]]);
+  return SurfacePoint::inFace(of, b);
 }
 
 }  // namespace gr

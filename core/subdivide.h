@@ -20,6 +20,11 @@ struct Subdivision {
   /// Per vertex of `mesh`: the point of the original mesh it sits on (a vertex, or a face with
   /// barycentric coordinates). Original vertices keep their indices and come first.
   std::vector<SurfacePoint> origin;
+  /// Per face of `mesh`: the face of the original mesh it lies in.
+  std::vector<int> originalFace;
+
+  /// A point of `mesh` as a point of the original mesh (`original` is the mesh subdivided).
+  SurfacePoint toOriginal(const TriMesh& original, const SurfacePoint& p) const;
 };
 
 /// levels >= 0 (0 returns a copy). Fails with InvalidInput on a negative level count, and

@@ -31,6 +31,10 @@ void declareUniformRemesh(const MeshModel& mesh, RichParameterList& params) {
                           "(0 to 3; each level: 4x the vertices and about 4x the time). Finer cells give better "
                           "shaped triangles when the target is a large share of the input's vertices; samples "
                           "then also lie between input vertices (default 0)."));
+  params.addParam(RichBool(param::kSubVertexPlacement, defaults.subVertexPlacement, "Sub-vertex placement",
+                           "Place each new sample where the fronts meet, inside a face, rather than at the "
+                           "farthest input vertex (paper 3.1): fewer thin triangles on smooth surfaces, but samples "
+                           "may leave sharp edges (default false)."));
   params.addParam(RichBool(param::kLabelInput, false, "Label input",
                            "Also write into the input mesh each vertex's Voronoi cell (the output vertex it belongs "
                            "to) as vertex quality, and color it by cell (default false: the input is not changed)."));
@@ -54,6 +58,7 @@ Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, Fi
   fps.targetCount = params.getInt(param::kTargetVertices);
   fps.minSpacing = fps.targetCount > 0 ? 0.0 : params.getAbsPerc(param::kSpacing);
   fps.seed = static_cast<unsigned>(params.getInt(param::kSeed));
+  fps.subVertexPlacement = params.getBool(param::kSubVertexPlacement);
   if (fps.targetCount < 0) return invalidInput("TargetVertices must be >= 0, got " + std::to_string(fps.targetCount));
   if (fps.targetCount == 0 && !(fps.minSpacing > 0.0))
     return invalidInput("TargetVertices is 0 and Spacing is not > 0: give one of them");
@@ -69,7 +74,7 @@ Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, Fi
   FastMarcher marcher(fine->mesh, metric);
   Expected<FpsResult> samples = farthestPointSampling(marcher, fps, ctx.progress.sub(0.0, 0.6));
   if (!samples) return samples.status();
-  Expected<DelaunayResult> result = geodesicDelaunay(marcher, samples->samples, {}, ctx.progress.sub(0.6, 0.9));
+  Expected<DelaunayResult> result = geodesicDelaunay(marcher, samples->points, {}, ctx.progress.sub(0.6, 0.9));
   if (!result) return result.status();
   const AngleStatistics angles = angleStatistics(result->mesh);
   const SurfaceDistance hausdorff = surfaceDistance(result->mesh, mesh);
@@ -82,8 +87,8 @@ Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, Fi
   MeshModel* out = doc.addNewMesh("", label, true);
   if (copyColor) out->updateDataMask(MeshModel::MM_VERTCOLOR);
   if (copyQuality) out->updateDataMask(MeshModel::MM_VERTQUALITY);
-  std::vector<SurfacePoint> origin(result->sampleVertex.size());
-  for (size_t i = 0; i < origin.size(); ++i) origin[i] = fine->origin[result->sampleVertex[i]];
+  std::vector<SurfacePoint> origin(result->samplePoint.size());
+  for (size_t i = 0; i < origin.size(); ++i) origin[i] = fine->toOriginal(mesh, result->samplePoint[i]);
   adapters::writeMesh(result->mesh, out->cm, m, view, origin, copyColor, copyQuality);
   if (labelInput) {  // the input's vertices keep their indices in the subdivision
     const std::vector<int> region(result->region.begin(), result->region.begin() + mesh.vertexCount());
@@ -103,8 +108,11 @@ Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, Fi
           std::to_string(result->mesh.faceCount()) + " faces on the new layer '" + label.toStdString() + "'");
   ctx.log("Samples: " + std::to_string(samples->samples.size()) + " by farthest-point sampling, " +
           std::to_string(result->addedSamples) + " added to make the triangulation valid (" +
-          std::to_string(result->repairRounds) + " rounds); covering radius " + formatNumber(samples->coveringRadius, "%.4g") +
-          (result->flippedEdges > 0 ? "; " + std::to_string(result->flippedEdges) + " flat triangles fixed by edge flips"
+          std::to_string(result->repairRounds) + " rounds)" +
+          (result->droppedSamples > 0 ? ", " + std::to_string(result->droppedSamples) + " left out (nearest to no vertex)"
+                                      : std::string()) +
+          "; covering radius " + formatNumber(samples->coveringRadius, "%.4g") +
+          (result->flippedEdges > 0 ? "; " + std::to_string(result->flippedEdges) + " edges flipped to Delaunay"
                                     : std::string()));
   ctx.log("Topology kept: " + std::to_string(result->mesh.topology.components) + " components, genus " +
           std::to_string(result->mesh.topology.genus) + ", " + std::to_string(result->mesh.topology.boundaryLoops) +

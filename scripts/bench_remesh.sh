@@ -42,12 +42,13 @@ print(f"Run: {ctx.get('date', '?')} on {ctx.get('host_name', '?')}, {ctx.get('nu
       f"load average {ctx.get('load_avg', '?')}; CPU time per run, median of the repetitions; "
       "ratio = CGAL time / our time (> 1: ours is faster); ours: time = engine (FastMarcher construction) "
       "+ sampling + triangulation; quality: std of all angles, smallest angle, "
-      "% of triangles with an angle under 30°, one-sided Hausdorff distance output → input in % of the "
-      "input's bounding-box diagonal.")
+      "% of triangles with an angle under 30°, Hausdorff distance output → input (one-sided) and both ways "
+      "(two-sided), and the RMS distance both ways, in % of the input's bounding-box diagonal; "
+      "ours + sub-vertex: FpsParams::subVertexPlacement (the filter's SubVertexPlacement).")
 print()
 print("| mesh | target | method | vertices | faces | added | time | engine | sampling | triangulation | CGAL / ours "
-      "| angle std | min angle | % < 30° | Hausdorff % |")
-print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+      "| angle std | min angle | % < 30° | Hausdorff % | two-sided % | RMS % |")
+print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
 shown = set()
 for (family, mesh, target), rows in runs.items():
     r = rows[0]
@@ -55,18 +56,20 @@ for (family, mesh, target), rows in runs.items():
     if mesh not in shown and "vertices_in" in r:
         shown.add(mesh)
         print(f"| {mesh} | input | — | {int(r['vertices_in']):,} | | | | | | | | {r['in_angle_std']:.1f}° "
-              f"| {r['in_angle_min']:.1f}° | {r['in_lt30_pct']:.2f} | |")
+              f"| {r['in_angle_min']:.1f}° | {r['in_lt30_pct']:.2f} | | | |")
     if err:
-        print(f"| {mesh} | {target} | {family} | error: {err} | | | | | | | | | | | |")
+        print(f"| {mesh} | {target} | {family} | error: {err} | | | | | | | | | | | | | |")
         continue
     ours = runs.get(("Ours", mesh, target))
     ratio = ms(rows) / ms(ours) if family == "Cgal" and ours and "vertices" in ours[0] else None
     added = f"{int(r['added']):,}" if "added" in r else ""
-    eng = t(med(rows, "engine_ms")) if family == "Ours" else ""
-    samp = t(med(rows, "sampling_ms")) if family == "Ours" else ""
-    tri = t(med(rows, "delaunay_ms")) if family == "Ours" else ""
-    label = "**ours**" if family == "Ours" else f"CGAL (L = {r['edge_length']:.4g})"
+    ours_family = family.startswith("Ours")
+    eng = t(med(rows, "engine_ms")) if ours_family else ""
+    samp = t(med(rows, "sampling_ms")) if ours_family else ""
+    tri = t(med(rows, "delaunay_ms")) if ours_family else ""
+    label = {"Ours": "**ours**", "OursSubVertex": "ours + sub-vertex"}.get(family) or f"CGAL (L = {r['edge_length']:.4g})"
     print(f"| {mesh} | {target} | {label} | {int(r['vertices']):,} | {int(r['faces']):,} | {added} "
           f"| {t(ms(rows))} | {eng} | {samp} | {tri} | {'' if ratio is None else f'{ratio:.2f}×'} "
-          f"| {r['angle_std']:.1f}° | {r['angle_min']:.1f}° | {r['lt30_pct']:.2f} | {r['hausdorff_pct']:.3f} |")
+          f"| {r['angle_std']:.1f}° | {r['angle_min']:.1f}° | {r['lt30_pct']:.2f} | {r['hausdorff_pct']:.3f} "
+          f"| {r['hausdorff2_pct']:.3f} | {r['rms2_pct']:.4f} |")
 PY

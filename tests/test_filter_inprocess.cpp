@@ -3,9 +3,11 @@
 // filter, the user's mesh (positions, quality, colour, flags, data mask) is exactly as before.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <set>
 #include <vector>
 
 #include <common/GLLogStream.h>
@@ -284,6 +286,36 @@ TEST_F(FilterInProcess, UniformRemeshInterpolatesQualityAtRefinedSamples) {
   EXPECT_GT(betweenVertices, 0) << "with refinement some samples lie between input vertices";
   EXPECT_NE(logText().find("subdivisions"), std::string::npos) << logText();
   EXPECT_NE(logText().find("Topology kept: 1 components, genus 0, 0 boundary loops"), std::string::npos) << logText();
+}
+
+// With SubVertexPlacement, interior samples move inside faces: quality (q = x) is interpolated
+// exactly there too, and the topology is kept.
+TEST_F(FilterInProcess, UniformRemeshWithSubVertexPlacement) {
+  use("Remeshing: Geodesic Uniform");
+  const TriMesh bunny = test::loadRealMesh("bunny00.off");
+  MeshModel* mm = addMesh(doc, bunny.positions, bunny.triangles);
+  for (auto& v : mm->cm.vert) v.Q() = v.cP()[0];
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(3770));  // 10%
+  params.setValue(filters::param::kSubVertexPlacement, BoolValue(true));
+  ASSERT_TRUE(apply()) << logText();
+  MeshModel* out = doc.mm();
+  ASSERT_NE(out, mm);
+  std::set<std::array<float, 3>> inputPositions;
+  for (const auto& w : mm->cm.vert) inputPositions.insert({w.cP()[0], w.cP()[1], w.cP()[2]});
+  int betweenVertices = 0;
+  for (const auto& v : out->cm.vert) {
+    EXPECT_NEAR(v.cQ(), v.cP()[0], 1e-5) << "quality not interpolated at the sample";
+    betweenVertices += !inputPositions.count({v.cP()[0], v.cP()[1], v.cP()[2]});
+  }
+  EXPECT_GT(betweenVertices, out->cm.vn / 2) << "most interior samples should lie inside faces";
+  const TriMesh& in = bunny;
+  EXPECT_NE(logText().find("Topology kept: " + std::to_string(in.topology.components) + " components, genus " +
+                           std::to_string(in.topology.genus) + ", " + std::to_string(in.topology.boundaryLoops) +
+                           " boundary loops"),
+            std::string::npos)
+      << logText();
 }
 
 TEST_F(FilterInProcess, UniformRemeshBadInputLeavesTheDocumentAlone) {

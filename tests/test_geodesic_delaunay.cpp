@@ -114,18 +114,21 @@ Recount recount(const std::vector<Tri>& tris, int nv) {
   return r;
 }
 
-class DelaunayOnClosedMeshes : public ::testing::TestWithParam<std::tuple<std::string, double>> {};
+/// (mesh, sample fraction, sub-vertex placement)
+class DelaunayOnClosedMeshes : public ::testing::TestWithParam<std::tuple<std::string, double, bool>> {};
 
 TEST_P(DelaunayOnClosedMeshes, ManifoldOrientedSameTopology) {
-  const auto& [name, fraction] = GetParam();
+  const auto& [name, fraction, subVertex] = GetParam();
   const TriMesh m = test::loadRealMesh(name);
   const Recount input = recount(m.triangles, m.vertexCount());
   ASSERT_TRUE(input.closedManifoldEdges && input.manifoldVertices);
   FpsParams fps;
   fps.targetCount = std::max(4, static_cast<int>(fraction * m.vertexCount()));
-  const auto samples = farthestPointSampling(m, Metric::uniform(), fps);
+  fps.subVertexPlacement = subVertex;
+  FastMarcher marcher(m, Metric::uniform());
+  const auto samples = farthestPointSampling(marcher, fps);
   ASSERT_TRUE(samples);
-  const auto r = geodesicDelaunay(m, Metric::uniform(), samples->samples);
+  const auto r = geodesicDelaunay(marcher, samples->points);
   ASSERT_TRUE(r) << r.status().message;
   const Recount out = recount(r->mesh.triangles, r->mesh.vertexCount());
   std::printf("%-14s %2.0f%%: %d samples + %d added in %d rounds -> %d vertices, %d faces; components %d/%d, genus %d/%d\n",
@@ -136,7 +139,7 @@ TEST_P(DelaunayOnClosedMeshes, ManifoldOrientedSameTopology) {
               "triangles (input %.2f %%)\n",
               name.c_str(), 100 * fraction, q.stdDegrees, in.stdDegrees, q.minDegrees, in.minDegrees,
               100 * q.shareMinBelow30, 100 * in.shareMinBelow30);
-  EXPECT_EQ(r->mesh.vertexCount(), fps.targetCount + r->addedSamples);
+  EXPECT_EQ(r->mesh.vertexCount(), fps.targetCount + r->addedSamples - r->droppedSamples);
   EXPECT_TRUE(out.closedManifoldEdges);
   EXPECT_TRUE(out.oriented);
   EXPECT_TRUE(out.manifoldVertices);
@@ -148,24 +151,28 @@ TEST_P(DelaunayOnClosedMeshes, ManifoldOrientedSameTopology) {
 INSTANTIATE_TEST_SUITE_P(Meshes, DelaunayOnClosedMeshes,
                          ::testing::Combine(::testing::Values("fandisk.off", "bunny00.off", "armadillo.off", "knot2.off",
                                                               "elephant.off"),
-                                            ::testing::Values(0.1, 0.3)),
-                         [](const ::testing::TestParamInfo<std::tuple<std::string, double>>& p) {
+                                            ::testing::Values(0.1, 0.3), ::testing::Bool()),
+                         [](const ::testing::TestParamInfo<std::tuple<std::string, double, bool>>& p) {
                            const std::string n = std::get<0>(p.param);
-                           return n.substr(0, n.find('.')) + "_" + std::to_string(int(100 * std::get<1>(p.param)));
+                           return n.substr(0, n.find('.')) + "_" + std::to_string(int(100 * std::get<1>(p.param))) +
+                                  (std::get<2>(p.param) ? "_subvertex" : "");
                          });
 
-class DelaunayWithBoundaries : public ::testing::TestWithParam<std::tuple<std::string, double>> {};
+/// (mesh, sample fraction, sub-vertex placement)
+class DelaunayWithBoundaries : public ::testing::TestWithParam<std::tuple<std::string, double, bool>> {};
 
 TEST_P(DelaunayWithBoundaries, BoundaryLoopsKept) {
-  const auto& [name, fraction] = GetParam();
+  const auto& [name, fraction, subVertex] = GetParam();
   const TriMesh m = test::loadRealMesh(name);
   const Recount input = recount(m.triangles, m.vertexCount());
   ASSERT_GT(input.boundaryLoops, 0);
   FpsParams fps;
   fps.targetCount = std::max(8, static_cast<int>(fraction * m.vertexCount()));
-  const auto samples = farthestPointSampling(m, Metric::uniform(), fps);
+  fps.subVertexPlacement = subVertex;
+  FastMarcher marcher(m, Metric::uniform());
+  const auto samples = farthestPointSampling(marcher, fps);
   ASSERT_TRUE(samples);
-  const auto r = geodesicDelaunay(m, Metric::uniform(), samples->samples);
+  const auto r = geodesicDelaunay(marcher, samples->points);
   ASSERT_TRUE(r) << r.status().message;
   const Recount out = recount(r->mesh.triangles, r->mesh.vertexCount());
   std::printf("%-22s %2.0f%%: %d samples + %d added in %d rounds; loops %d/%d, components %d/%d, genus %d/%d\n",
@@ -181,13 +188,14 @@ TEST_P(DelaunayWithBoundaries, BoundaryLoopsKept) {
 
 INSTANTIATE_TEST_SUITE_P(Meshes, DelaunayWithBoundaries,
                          ::testing::Combine(::testing::Values("mech-holes-shark.off", "mask_cone.off"),
-                                            ::testing::Values(0.1, 0.3)),
-                         [](const ::testing::TestParamInfo<std::tuple<std::string, double>>& p) {
+                                            ::testing::Values(0.1, 0.3), ::testing::Bool()),
+                         [](const ::testing::TestParamInfo<std::tuple<std::string, double, bool>>& p) {
                            std::string n = std::get<0>(p.param);
                            n = n.substr(0, n.find('.'));
                            for (char& ch : n)
                              if (ch == '-') ch = '_';
-                           return n + "_" + std::to_string(int(100 * std::get<1>(p.param)));
+                           return n + "_" + std::to_string(int(100 * std::get<1>(p.param))) +
+                                  (std::get<2>(p.param) ? "_subvertex" : "");
                          });
 
 // A synthetic mesh of two components of different sizes: two icospheres, radius 1 and 0.5.
@@ -208,7 +216,7 @@ TEST(Delaunay, TwoComponentsAtTenAndThirtyPercent) {
     const Recount out = recount(r->mesh.triangles, r->mesh.vertexCount());
     std::printf("two icospheres %2.0f%%: %d samples + %d added, components %d, genus %d\n", 100 * fraction,
                 fps.targetCount, r->addedSamples, out.components, out.genusSum);
-    EXPECT_EQ(r->mesh.vertexCount(), fps.targetCount + r->addedSamples);
+    EXPECT_EQ(r->mesh.vertexCount(), fps.targetCount + r->addedSamples - r->droppedSamples);
     EXPECT_TRUE(out.closedManifoldEdges && out.oriented && out.manifoldVertices);
     EXPECT_EQ(out.components, 2);
     EXPECT_EQ(out.genusSum, 0);

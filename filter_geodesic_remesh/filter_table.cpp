@@ -1,10 +1,11 @@
+#include "filter_geodesic_remesh/adaptive_remesh_filter.h"
 #include "filter_geodesic_remesh/fast_marching_filter.h"
 #include "filter_geodesic_remesh/filter_spec.h"
 #include "filter_geodesic_remesh/uniform_remesh_filter.h"
 
 namespace gr::filters {
 
-enum FilterId { kFastMarching = 0, kUniformRemesh = 1 };
+enum FilterId { kFastMarching = 0, kUniformRemesh = 1, kAdaptiveRemesh = 2, kTotalCurvature = 3 };
 
 const std::vector<FilterSpec>& filterTable() {
   static const std::vector<FilterSpec> table = {
@@ -27,6 +28,25 @@ const std::vector<FilterSpec>& filterTable() {
        "Remeshing Using Front Propagation</i>, IJCV 2006, &sect;3.1&ndash;3.2.",
        MeshFilterInterface::Remeshing, MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR, declareUniformRemesh,
        applyUniformRemesh},
+      {kAdaptiveRemesh, "Remeshing: Geodesic Adaptive",
+       "Remeshes the surface with a density that follows a per-vertex field: the field sets the front speed F of "
+       "the fast marching, so farthest-point samples are spaced proportionally to F. The field is the vertex "
+       "quality (any filter that computes quality can drive it), the total curvature |k1|+|k2| from the "
+       "Cohen-Steiner&ndash;Morvan tensor, or the gradient of the vertex colour; mappings Attractive (denser where "
+       "the field is large, e.g. on sharp edges), Repulsive and Direct. Same guarantees as the uniform filter: "
+       "a manifold, oriented mesh with the input's components, genus and boundary loops, on a new layer.<br>See "
+       "G. Peyr&eacute; and L. Cohen, <i>Geodesic Remeshing Using Front Propagation</i>, IJCV 2006, "
+       "&sect;3.3&ndash;3.4.",
+       MeshFilterInterface::Remeshing, MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR, declareAdaptiveRemesh,
+       applyAdaptiveRemesh},
+      {kTotalCurvature, "Compute Total Curvature (Normal Cycle) into Vertex Quality",
+       "Computes the total curvature |k1|+|k2| of every vertex from the Cohen-Steiner&ndash;Morvan normal-cycle "
+       "tensor averaged over a ball of the given radius, writes it into the vertex quality and colours the "
+       "vertices by it. This is the field the adaptive remeshing uses for curvature; look at it before "
+       "remeshing.<br>See D. Cohen-Steiner and J.-M. Morvan, <i>Restricted Delaunay triangulations and normal "
+       "cycle</i>, SoCG 2003, and G. Peyr&eacute; and L. Cohen, IJCV 2006, &sect;3.4.",
+       MeshFilterInterface::FilterClass(MeshFilterInterface::Quality + MeshFilterInterface::VertexColoring),
+       MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR, declareTotalCurvature, applyTotalCurvature},
   };
   return table;
 }

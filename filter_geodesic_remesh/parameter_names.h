@@ -21,3 +21,13 @@ constexpr const char* kRefinement = "Refinement";
 constexpr const char* kSubVertexPlacement = "SubVertexPlacement";
 
 }  // namespace gr::filters::param
+
+namespace gr::filters::param {
+
+// Remeshing: Geodesic Adaptive (plus TargetVertices, Spacing, Seed, SubVertexPlacement above)
+constexpr const char* kField = "Field";
+constexpr const char* kMapping = "Mapping";
+constexpr const char* kStrength = "Strength";
+constexpr const char* kCurvatureRadius = "CurvatureRadius";  // also: Compute Total Curvature
+
+}  // namespace gr::filters::param

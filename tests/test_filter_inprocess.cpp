@@ -3,8 +3,10 @@
 // filter, the user's mesh (positions, quality, colour, flags, data mask) is exactly as before.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <set>
@@ -14,6 +16,7 @@
 #include <common/meshmodel.h>
 
 #include "core/fast_marching.h"
+#include "vcg_adapters/cmesho_adapter.h"
 #include "filter_geodesic_remesh/filter_geodesic_remesh.h"
 #include "filter_geodesic_remesh/parameter_names.h"
 #include "tests/test_support.h"
@@ -342,6 +345,125 @@ TEST_F(FilterInProcess, UniformRemeshBadInputLeavesTheDocumentAlone) {
   params.setValue(filters::param::kRefinement, IntValue(7));
   expectCleanFailure(*f, "Refinement must be 0 to 3");
   EXPECT_EQ(doc.meshList.size(), 3) << "a failed filter added a layer";
+}
+
+// --- Adaptive remeshing and total curvature ---------------------------------------------------
+
+/// Vertices of `m` that are endpoints of an edge whose dihedral angle exceeds 60 degrees,
+/// computed here from face normals (independently of the curvature code).
+std::vector<char> onSharpEdges(const TriMesh& m) {
+  std::vector<char> sharp(m.vertexCount(), 0);
+  const auto normal = [&](int f) {
+    const Tri& t = m.triangles[f];
+    return Vec3((m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]).normalized());
+  };
+  for (int c = 0; c < 3 * m.faceCount(); ++c) {
+    const int o = m.oppositeCorner[c];
+    if (o < 0 || normal(TriMesh::face(c)).dot(normal(TriMesh::face(o))) > std::cos(60.0 * M_PI / 180.0)) continue;
+    sharp[m.vertex(TriMesh::next(c))] = sharp[m.vertex(TriMesh::prev(c))] = 1;
+  }
+  return sharp;
+}
+
+// Attractive total curvature on fandisk: the new layer keeps the topology, and its vertices
+// gather on the sharp edges (a larger share of output vertices near them than the uniform run).
+TEST_F(FilterInProcess, AdaptiveRemeshGathersVerticesOnSharpEdges) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  const std::vector<char> sharp = onSharpEdges(fandisk);
+  const auto shareNearSharp = [&](const MeshModel& out) {
+    // An output vertex is "near" when its nearest input vertex is on a sharp edge.
+    int near = 0;
+    for (const auto& v : out.cm.vert) {
+      int best = 0;
+      double bestD = 1e300;
+      for (int w = 0; w < fandisk.vertexCount(); ++w) {
+        const double d = (fandisk.positions[w] - Vec3(v.cP()[0], v.cP()[1], v.cP()[2])).squaredNorm();
+        if (d < bestD) bestD = d, best = w;
+      }
+      near += sharp[best];
+    }
+    return double(near) / out.cm.vn;
+  };
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  use("Remeshing: Geodesic Uniform");
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(647));
+  ASSERT_TRUE(apply()) << logText();
+  const double uniformShare = shareNearSharp(*doc.mm());
+  doc.setCurrentMesh(mm->id());
+  use("Remeshing: Geodesic Adaptive");
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(647));
+  ASSERT_TRUE(apply()) << logText();
+  MeshModel* out = doc.mm();
+  ASSERT_NE(out, mm);
+  EXPECT_EQ(doc.meshList.size(), 3);
+  const double adaptiveShare = shareNearSharp(*out);
+  std::printf("share of output vertices on sharp edges: uniform %.3f, adaptive %.3f\n", uniformShare, adaptiveShare);
+  EXPECT_GT(adaptiveShare, 1.5 * uniformShare);
+  EXPECT_NE(logText().find("Field: total curvature"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("mapping Attractive"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("Topology kept: 1 components, genus 0, 0 boundary loops"), std::string::npos) << logText();
+  const auto tri = adapters::toCore(out->cm);
+  ASSERT_TRUE(tri);
+  EXPECT_TRUE(tri->mesh.topology.isManifold());
+  EXPECT_EQ(tri->mesh.topology.inconsistentEdges, 0);
+}
+
+TEST_F(FilterInProcess, AdaptiveRemeshBadFieldsLeaveTheDocumentAlone) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  use("Remeshing: Geodesic Adaptive");
+  declare(*mm);
+  params.setValue(filters::param::kField, EnumValue(0));  // vertex quality, but the mesh has none
+  expectCleanFailure(*mm, "the mesh has no vertex quality");
+  params.setValue(filters::param::kField, EnumValue(2));  // colour gradient, no colour
+  expectCleanFailure(*mm, "the mesh has no vertex colour");
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  for (auto& v : mm->cm.vert) v.Q() = v.cP()[0];  // negative values: not allowed with Attractive
+  params.setValue(filters::param::kField, EnumValue(0));
+  expectCleanFailure(*mm, "negative");
+  params.setValue(filters::param::kStrength, FloatValue(std::numeric_limits<float>::quiet_NaN()));
+  params.setValue(filters::param::kMapping, EnumValue(0));
+  expectCleanFailure(*mm, "strength");
+  params.setValue(filters::param::kMapping, EnumValue(7));
+  expectCleanFailure(*mm, "Mapping must be 0 to 2");
+  EXPECT_EQ(doc.meshList.size(), 1) << "a failed filter added a layer";
+}
+
+// Any filter's quality drives it: a quality field (here Direct on q = x) is read and logged.
+TEST_F(FilterInProcess, AdaptiveRemeshFromVertexQuality) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  for (auto& v : mm->cm.vert) v.Q() = v.cP()[0];
+  use("Remeshing: Geodesic Adaptive");
+  declare(*mm);
+  params.setValue(filters::param::kField, EnumValue(0));
+  params.setValue(filters::param::kMapping, EnumValue(0));  // Direct: any sign
+  params.setValue(filters::param::kTargetVertices, IntValue(400));
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_NE(logText().find("Field: vertex quality"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("mapping Direct"), std::string::npos) << logText();
+  // Direct, q = x: F grows with x, so the half with the larger x gets fewer vertices.
+  float lo = 1e30f, hi = -1e30f;
+  for (const auto& v : mm->cm.vert) lo = std::min(lo, v.cP()[0]), hi = std::max(hi, v.cP()[0]);
+  int low = 0, high = 0;
+  for (const auto& v : doc.mm()->cm.vert) (v.cP()[0] < 0.5f * (lo + hi) ? low : high)++;
+  EXPECT_GT(low, high);
+}
+
+TEST_F(FilterInProcess, TotalCurvatureOfASphereIsTwoOverR) {
+  const double r = 2.5;
+  const TriMesh sphere = test::icosphere(5, r);
+  MeshModel* mm = addMesh(doc, sphere.positions, sphere.triangles);
+  use("Compute Total Curvature (Normal Cycle) into Vertex Quality");
+  declare(*mm);
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_TRUE(mm->hasDataMask(MeshModel::MM_VERTQUALITY));
+  for (const auto& v : mm->cm.vert) ASSERT_NEAR(v.cQ(), 2.0 / r, 0.05 * 2.0 / r);
+  EXPECT_NE(logText().find("written to vertex quality"), std::string::npos) << logText();
+  EXPECT_EQ(doc.meshList.size(), 1);
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
 
+#include "core/color_gradient.h"
+
 namespace gr::adapters {
 
 Expected<CoreView> toCore(const CMeshO& m) {
@@ -27,6 +29,15 @@ std::vector<double> vertexQuality(const CMeshO& m, const CoreView& view) {
   std::vector<double> q(view.mesh.vertexCount());
   for (int v = 0; v < view.mesh.vertexCount(); ++v) q[v] = m.vert[view.map.vcgOfCoreVertex[v]].cQ();
   return q;
+}
+
+std::vector<double> vertexColorIntensity(const CMeshO& m, const CoreView& view) {
+  std::vector<double> intensity(view.mesh.vertexCount());
+  for (int v = 0; v < view.mesh.vertexCount(); ++v) {
+    const vcg::Color4b& c = m.vert[view.map.vcgOfCoreVertex[v]].cC();
+    intensity[v] = rgbIntensity(c[0], c[1], c[2]);
+  }
+  return intensity;
 }
 
 void writeVertexQuality(CMeshO& m, const CoreView& view, const std::vector<double>& values, double missing) {

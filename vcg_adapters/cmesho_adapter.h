@@ -31,6 +31,9 @@ std::vector<int> selectedVertices(const CMeshO& m, const CoreView& view);
 /// Per-vertex quality, per core vertex.
 std::vector<double> vertexQuality(const CMeshO& m, const CoreView& view);
 
+/// Per-vertex colour intensity (BT.601 luma of the 8-bit RGB, 0..255), per core vertex.
+std::vector<double> vertexColorIntensity(const CMeshO& m, const CoreView& view);
+
 /// Writes one value per core vertex into vertex quality; non-finite values become `missing`.
 void writeVertexQuality(CMeshO& m, const CoreView& view, const std::vector<double>& values, double missing);
 

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The main job: a real mesh through the real meshlabserver with our plugin, and a report.
 #   bash scripts/main.sh [mesh.off]
-# Runs two scripts on the mesh (default fandisk.off), each writing a PLY into output/:
-#   resources/fast_marching_vertex0.mlx -> <mesh>_geodesic.ply  (distance from vertex 0 in quality, colour ramp)
-#   resources/uniform_remesh_10pct.mlx  -> <mesh>_remesh.ply    (geodesic uniform remeshing, new layer)
+# Runs three scripts on the mesh (default fandisk.off), each writing a PLY into output/:
+#   resources/fast_marching_vertex0.mlx     -> <mesh>_geodesic.ply  (distance from vertex 0 in quality, colour ramp)
+#   resources/uniform_remesh_10pct.mlx      -> <mesh>_remesh.ply    (geodesic uniform remeshing, new layer)
+#   resources/adaptive_curvature_10pct.mlx  -> <mesh>_adaptive.ply  (curvature-adaptive remeshing, new layer)
+# (the remeshing scripts ask for 647 vertices: 10% of fandisk)
 # and prints MeshLab's log of each run. The plugin is loaded from a staged prefix (build/stage),
 # not from /usr.
 set -euo pipefail
@@ -42,3 +44,5 @@ run "$root/resources/fast_marching_vertex0.mlx" "$root/output/${name}_geodesic.p
     "per-vertex quality = geodesic distance from vertex 0, colour ramp"
 run "$root/resources/uniform_remesh_10pct.mlx" "$root/output/${name}_remesh.ply" \
     "geodesic uniform remeshing, colour and quality carried from the input"
+run "$root/resources/adaptive_curvature_10pct.mlx" "$root/output/${name}_adaptive.ply" \
+    "curvature-adaptive geodesic remeshing (vertices gather on sharp edges)"

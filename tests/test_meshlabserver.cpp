@@ -6,10 +6,12 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include "core/evaluation.h"
 #include "core/fast_marching.h"
@@ -184,6 +186,95 @@ TEST(Meshlabserver, UniformRemeshKeepsTheBoundaryLoopsOfTheShark) {
   EXPECT_EQ(result->topology.genus, 0);
   EXPECT_TRUE(result->topology.isManifold());
   EXPECT_EQ(result->topology.inconsistentEdges, 0);
+}
+
+// --- The acceptance runs, one resources/acceptance/*.mlx each -----------------------
+
+/// The number before `word` in the log line that contains `line` (e.g. "6 added to make").
+int numberBefore(const std::string& log, const std::string& word) {
+  const size_t at = log.find(word);
+  if (at == std::string::npos) return -1;
+  size_t start = log.rfind(' ', at - 2);
+  start = start == std::string::npos ? 0 : start + 1;
+  return std::atoi(log.substr(start, at - start).c_str());
+}
+
+class UniformAcceptance : public ::testing::TestWithParam<std::tuple<std::string, int>> {};
+
+// Output through the real meshlabserver: manifold, oriented, the input's components, genus and
+// boundary loops, and the vertex count the log promises (target + added - left out).
+TEST_P(UniformAcceptance, TopologyKeptThroughMeshlabserver) {
+  const auto& [name, pct] = GetParam();
+  const std::string script = kResources + "acceptance/uniform_" + name + "_" + std::to_string(pct) + "pct.mlx";
+  const std::string out = kOut + "acceptance_" + name + "_" + std::to_string(pct) + ".ply";
+  std::remove(out.c_str());
+  const ServerRun run =
+      meshlabserver("-i '" + test::meshPath(name + ".off") + "' -o '" + out + "' -m sa -s '" + script + "'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto input = loadTriMesh(test::meshPath(name + ".off"));
+  const auto result = loadTriMesh(out);
+  ASSERT_TRUE(input && result) << run.output;
+  const Topology &a = input->topology, &b = result->topology;
+  EXPECT_TRUE(b.isManifold());
+  EXPECT_EQ(b.inconsistentEdges, 0);
+  EXPECT_EQ(b.isolatedVertices, 0);
+  EXPECT_EQ(b.components, a.components);
+  EXPECT_EQ(b.genus, a.genus);
+  EXPECT_EQ(b.boundaryLoops, a.boundaryLoops);
+  const int target = input->vertexCount() * pct / 100;
+  const int added = numberBefore(run.output, "added to make the triangulation valid");
+  ASSERT_GE(added, 0) << run.output;
+  EXPECT_EQ(result->vertexCount(), target + added) << run.output;
+  const AngleStatistics q = angleStatistics(*result);
+  std::printf("%s %d%%: %d vertices (%d added), genus %d, %d loops, %d components; angle std %.1f, min %.1f, "
+              "%.2f %% under 30 deg\n",
+              name.c_str(), pct, result->vertexCount(), added, b.genus, b.boundaryLoops, b.components, q.stdDegrees,
+              q.minDegrees, 100 * q.shareMinBelow30);
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, UniformAcceptance,
+                         ::testing::Combine(::testing::Values("fandisk", "bunny00", "armadillo", "knot2",
+                                                              "mech-holes-shark", "elephant"),
+                                            ::testing::Values(10, 30)),
+                         [](const ::testing::TestParamInfo<std::tuple<std::string, int>>& p) {
+                           std::string n = std::get<0>(p.param);
+                           for (char& ch : n)
+                             if (ch == '-') ch = '_';
+                           return n + "_" + std::to_string(std::get<1>(p.param));
+                         });
+
+// Curvature-adaptive remeshing through meshlabserver: valid output, and the field logged.
+TEST(Meshlabserver, AdaptiveCurvatureRemeshOfFandisk) {
+  const std::string out = kOut + "fandisk_adaptive.ply";
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + test::meshPath("fandisk.off") + "' -o '" + out + "' -m sa -s '" +
+                                      kResources + "adaptive_curvature_10pct.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("Field: total curvature"), std::string::npos) << run.output;
+  const auto result = loadTriMesh(out);
+  ASSERT_TRUE(result);
+  EXPECT_TRUE(result->topology.isManifold());
+  EXPECT_EQ(result->topology.inconsistentEdges, 0);
+  EXPECT_EQ(result->topology.components, 1);
+  EXPECT_EQ(result->topology.genus, 0);
+  EXPECT_EQ(result->topology.boundaryEdges, 0);
+  EXPECT_EQ(result->vertexCount(), 647 + numberBefore(run.output, "added to make the triangulation valid"));
+}
+
+// Any filter that writes quality drives the adaptive remeshing: curvature into quality, then
+// the adaptive filter on "Vertex quality", in one script.
+TEST(Meshlabserver, QualityFromAnotherFilterDrivesTheAdaptiveRemesh) {
+  const std::string out = kOut + "fandisk_quality_adaptive.ply";
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + test::meshPath("fandisk.off") + "' -o '" + out + "' -m sa -s '" +
+                                      kResources + "quality_driven_adaptive_10pct.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("written to vertex quality"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("Field: vertex quality"), std::string::npos) << run.output;
+  const auto result = loadTriMesh(out);
+  ASSERT_TRUE(result);
+  EXPECT_TRUE(result->topology.isManifold());
+  EXPECT_EQ(result->topology.genus, 0);
 }
 
 // --- Bad input: a clear message in the log, a non-zero exit, no output, input untouched ----

@@ -1,13 +1,10 @@
 // Geodesic Delaunay triangulation of farthest-point samples (paper §3.1-3.2): the output must
 // be an edge- and vertex-manifold, consistently oriented closed mesh with the input's components
-// and genus. Topology is recounted here, independently of TriMesh.
+// and genus. Topology is recounted independently of TriMesh (test::recount, tests/test_support.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
-#include <map>
-#include <numeric>
-#include <set>
 
 #include "core/evaluation.h"
 #include "core/farthest_point_sampling.h"
@@ -17,102 +14,8 @@
 namespace gr {
 namespace {
 
-struct Recount {
-  bool closedManifoldEdges = true;  ///< every edge in exactly two faces
-  bool manifoldEdges = true;        ///< every edge in one or two faces
-  int boundaryLoops = 0;            ///< loops of edges with one face
-  bool oriented = true;             ///< every directed edge once
-  bool manifoldVertices = true;     ///< every vertex's link is one cycle or one path
-  int components = 0;
-  int genusSum = 0;
-  int isolated = 0;
-};
-
-Recount recount(const std::vector<Tri>& tris, int nv) {
-  Recount r;
-  std::map<std::pair<int, int>, int> undirected, directed;
-  for (const Tri& t : tris)
-    for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      ++undirected[std::minmax(a, b)];
-      if (++directed[{a, b}] > 1) r.oriented = false;
-    }
-  for (const auto& [e, n] : undirected) {
-    if (n != 2) r.closedManifoldEdges = false;
-    if (n > 2) r.manifoldEdges = false;
-  }
-  // Link of each vertex: the edges opposite to it; one cycle <=> connected with all degrees 2.
-  std::vector<std::vector<std::pair<int, int>>> link(nv);
-  for (const Tri& t : tris)
-    for (int k = 0; k < 3; ++k) link[t[k]].push_back({t[(k + 1) % 3], t[(k + 2) % 3]});
-  for (int v = 0; v < nv; ++v) {
-    if (link[v].empty()) {
-      ++r.isolated;
-      continue;
-    }
-    std::map<int, std::vector<int>> adj;
-    for (const auto& [a, b] : link[v]) {
-      adj[a].push_back(b);
-      adj[b].push_back(a);
-    }
-    // One cycle (interior vertex) or one path (boundary vertex): connected, degrees <= 2, and
-    // zero or two ends.
-    bool ok = true;
-    int ends = 0;
-    for (const auto& [a, n] : adj) {
-      ok = ok && n.size() <= 2;
-      ends += n.size() == 1;
-    }
-    ok = ok && (ends == 0 || ends == 2);
-    std::set<int> seen = {adj.begin()->first};
-    std::vector<int> stack = {adj.begin()->first};
-    while (!stack.empty()) {
-      const int a = stack.back();
-      stack.pop_back();
-      for (int b : adj[a])
-        if (seen.insert(b).second) stack.push_back(b);
-    }
-    if (!ok || seen.size() != adj.size()) r.manifoldVertices = false;
-  }
-  // Components (union-find over faces' vertices) and genus from chi = V - E + F = 2 - 2g.
-  std::vector<int> parent(nv);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (const Tri& t : tris) {
-    parent[find(t[0])] = find(t[1]);
-    parent[find(t[1])] = find(t[2]);
-  }
-  std::map<int, long> chi;
-  for (int v = 0; v < nv; ++v)
-    if (!link[v].empty()) ++chi[find(v)];
-  for (const auto& [e, n] : undirected) chi[find(e.first)] -= 1;
-  for (const Tri& t : tris) chi[find(t[0])] += 1;
-  // Boundary loops: boundary edges joined at shared endpoints (union-find of their own).
-  std::vector<int> loop(nv);
-  std::iota(loop.begin(), loop.end(), 0);
-  auto findLoop = [&](int x) {
-    while (loop[x] != x) x = loop[x] = loop[loop[x]];
-    return x;
-  };
-  std::set<int> boundaryVertices;
-  std::map<int, int> loopsOfComponent;
-  for (const auto& [e, n] : undirected)
-    if (n == 1) {
-      loop[findLoop(e.first)] = findLoop(e.second);
-      boundaryVertices.insert(e.first);
-      boundaryVertices.insert(e.second);
-    }
-  std::set<int> loopRoots;
-  for (int v : boundaryVertices)
-    if (loopRoots.insert(findLoop(v)).second) ++loopsOfComponent[find(v)];
-  r.boundaryLoops = static_cast<int>(loopRoots.size());
-  r.components = static_cast<int>(chi.size());
-  for (const auto& [root, c] : chi) r.genusSum += static_cast<int>((2 - c - loopsOfComponent[root]) / 2);
-  return r;
-}
+using test::Recount;
+using test::recount;
 
 /// (mesh, sample fraction, sub-vertex placement)
 class DelaunayOnClosedMeshes : public ::testing::TestWithParam<std::tuple<std::string, double, bool>> {};

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/tri_mesh.h"
 
@@ -26,5 +27,23 @@ namespace gr::test {
 TriMesh cylinder(int nTheta, int nZ, double r = 1.0, double h = 2.0);
 /// UV (latitude-longitude) sphere of radius r with poles: thin triangles near the poles.
 TriMesh uvSphere(int nLat, int nLon, double r = 1.0);
+
+}  // namespace gr::test
+
+namespace gr::test {
+
+/// Topology of a triangle soup, recounted independently of TriMesh (maps, link cycles, union-find),
+/// so that tests of the remeshing do not check TriMesh with itself.
+struct Recount {
+  bool closedManifoldEdges = true;  ///< every edge in exactly two faces
+  bool manifoldEdges = true;        ///< every edge in one or two faces
+  int boundaryLoops = 0;            ///< loops of edges with one face
+  bool oriented = true;             ///< every directed edge once
+  bool manifoldVertices = true;     ///< every vertex's link is one cycle or one path
+  int components = 0;
+  int genusSum = 0;                 ///< sum over components of (2 - chi - loops) / 2
+  int isolated = 0;                 ///< vertices in no face
+};
+Recount recount(const std::vector<Tri>& tris, int vertexCount);
 
 }  // namespace gr::test

@@ -22,19 +22,30 @@ struct Dual {
 };
 
 Dual buildDual(const TriMesh& mesh, const std::vector<int>& label, int cellCount) {
-  Dual d;
-  std::set<std::array<int, 3>> seen;  // sorted label triples
-  std::vector<char> bad(cellCount, 0);
-  for (const Tri& t : mesh.triangles) {
-    const int i = label[t[0]], j = label[t[1]], k = label[t[2]];
-    if (i == j || j == k || k == i) continue;
-    std::array<int, 3> key = {i, j, k};
+  // Faces with three labels, keyed by their sorted label triple, sorted so a triple met twice
+  // (three cells meeting twice) sits next to its twin.
+  std::vector<std::pair<std::array<int, 3>, int>> keyed;  // (sorted labels, face)
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    std::array<int, 3> key = {label[t[0]], label[t[1]], label[t[2]]};
+    if (key[0] == key[1] || key[1] == key[2] || key[2] == key[0]) continue;
     std::sort(key.begin(), key.end());
-    if (!seen.insert(key).second) {  // three cells meeting twice
+    keyed.push_back({key, f});
+  }
+  std::sort(keyed.begin(), keyed.end());
+  Dual d;
+  std::vector<char> bad(cellCount, 0);
+  for (size_t a = 0; a < keyed.size();) {
+    size_t b = a + 1;
+    while (b < keyed.size() && keyed[b].first == keyed[a].first) ++b;
+    const Tri& t = mesh.triangles[keyed[a].second];
+    const int i = label[t[0]], j = label[t[1]], k = label[t[2]];
+    if (b - a > 1) {  // three cells meeting twice
       bad[i] = bad[j] = bad[k] = 1;
-      continue;
+    } else {
+      d.triangles.push_back({i, j, k});  // oriented like the input face
     }
-    d.triangles.push_back({i, j, k});
+    a = b;
   }
   for (int c = 0; c < cellCount; ++c)
     if (bad[c]) d.badCells.push_back(c);

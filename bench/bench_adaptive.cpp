@@ -1,0 +1,483 @@
+// Curvature-adaptive remeshing (paper §3.3-3.4, Fig. 14): approximation error and time against
+// uniform remeshing, CGAL's isotropic remeshing and MeshLab's quadric edge collapse, same meshes,
+// same output vertex count.
+//
+//   Uniform/<mesh>/<pct>   FastMarcher(mesh, Metric::uniform()) + farthestPointSampling +
+//                          geodesicDelaunay on one engine (the uniform filter's pipeline), target =
+//                          <pct> of the input's vertices. Its final vertex count N (samples + repair)
+//                          is the count every other method is matched to.
+//   Adaptive/<mesh>/<pct>  totalCurvature (radius 2 mean edge lengths) + speedFromField (Attractive,
+//                          strength 16) + the same pipeline under P = 1/F. Target calibrated untimed
+//                          so that the final count is <= N and within 1% of it (the repair adds more
+//                          samples under a non-uniform metric): start at N, lower by each run's excess.
+//                          Counters curvature_ms, speed_ms, engine_ms, sampling_ms, delaunay_ms: each
+//                          stage's thread CPU time; the time column is their total.
+//   Cgal/<mesh>/<pct>      CGAL 5.5 isotropic_remeshing (3 iterations, protect_constraints(false)) on a
+//                          Surface_mesh<Epick> copy (copy untimed), target edge length calibrated untimed
+//                          to N vertices as in bench_remesh (up to 3 runs, within 1%).
+//   MeshLabQECD/<mesh>/<pct>  MeshLab's "Simplification: Quadric Edge Collapse Decimation" run by the
+//                          system meshlabserver: `xvfb-run -a meshlabserver -i <mesh> -o out.off -s
+//                          script.mlx`, TargetFaceNum = 2N - 4 (a closed genus-0 mesh of N vertices), all
+//                          other parameters MeshLab's defaults. Time: wall time of the whole command
+//                          (manual time), so it includes xvfb-run, process start, plugin loading, reading
+//                          and writing the OFF files - an upper bound of the filter's own time.
+//
+// Quality counters (never timed), with the same code for every method, on the output as a
+// gr::TriMesh: hausdorff2_pct = max of gr::surfaceDistance both ways, rms2_pct = sqrt of the mean of
+// both directions' squared RMS, both in % of the input's bounding-box diagonal; vertices, faces,
+// angle_min, lt30_pct. Cases: fandisk.off and bunny00.off at 2%, 5% and 10% of their vertices.
+// Select with --benchmark_filter, e.g. '/bunny00/', '^(Uniform|Adaptive)/'.
+
+#include <benchmark/benchmark.h>
+
+#include <stdlib.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "core/curvature.h"
+#include "core/evaluation.h"
+#include "core/farthest_point_sampling.h"
+#include "core/fast_marching.h"
+#include "core/geodesic_delaunay.h"
+#include "core/metric.h"
+#include "core/speed_field.h"
+#include "core/tri_mesh.h"
+#include "core/vcg_mesh.h"
+
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using SmVertex = SurfaceMesh::Vertex_index;
+
+constexpr double kStrength = 16.0;      ///< mu of the Attractive mapping
+constexpr double kRadiusInEdges = 2.0;  ///< curvature ball radius, in mean edge lengths
+constexpr int kAdaptiveCalibrationRuns = 6;
+constexpr double kCountTolerance = 0.01;
+constexpr int kCgalIterations = 3;
+constexpr int kCgalCalibrationRuns = 3;
+
+double threadSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+struct Case {
+  const char* mesh;   ///< name in the benchmark
+  const char* file;   ///< in GR_MESH_DIR
+  const char* label;  ///< "2pct"
+  double fraction;
+  std::string key() const { return std::string(mesh) + "/" + label; }
+};
+
+const Case kCases[] = {
+    {"fandisk", "fandisk.off", "2pct", 0.02},  {"fandisk", "fandisk.off", "5pct", 0.05},
+    {"fandisk", "fandisk.off", "10pct", 0.10}, {"bunny00", "bunny00.off", "2pct", 0.02},
+    {"bunny00", "bunny00.off", "5pct", 0.05},  {"bunny00", "bunny00.off", "10pct", 0.10},
+};
+
+// ------------------------------------------------------------------------------------------------
+// Meshes and per-case state (built once per process, never timed)
+
+struct BenchMesh {
+  std::string path;
+  gr::TriMesh tri;
+  double diagonal = 0.0;
+  std::optional<gr::Metric> adaptiveMetric;  ///< for the untimed calibration
+  std::unique_ptr<SurfaceMesh> cgal;
+};
+
+BenchMesh* getMesh(benchmark::State& state, const Case& c) {
+  static std::map<std::string, std::unique_ptr<BenchMesh>> cache;
+  auto& slot = cache[c.mesh];
+  if (slot) return slot.get();
+  const std::string path = std::string(GR_MESH_DIR) + "/" + c.file;
+  gr::Expected<gr::TriMesh> m = gr::loadTriMesh(path);
+  if (!m) {
+    state.SkipWithError(("mesh " + std::string(c.mesh) + ": " + m.status().message).c_str());
+    return nullptr;
+  }
+  slot = std::make_unique<BenchMesh>();
+  slot->path = path;
+  slot->tri = std::move(*m);
+  slot->diagonal = slot->tri.boundingBoxDiagonal();
+  return slot.get();
+}
+
+int targetCount(const Case& c, const BenchMesh& bm) {
+  return static_cast<int>(std::lround(c.fraction * bm.tri.vertexCount()));
+}
+
+void setQualityCounters(benchmark::State& state, const BenchMesh& bm, const gr::TriMesh& out) {
+  const gr::AngleStatistics a = gr::angleStatistics(out);
+  const gr::SurfaceDistance there = gr::surfaceDistance(out, bm.tri), back = gr::surfaceDistance(bm.tri, out);
+  auto& c = state.counters;
+  c["vertices_in"] = bm.tri.vertexCount();
+  c["vertices"] = out.vertexCount();
+  c["faces"] = out.faceCount();
+  c["angle_min"] = a.minDegrees;
+  c["lt30_pct"] = 100.0 * a.shareMinBelow30;
+  c["hausdorff2_pct"] = 100.0 * std::max(there.max, back.max) / bm.diagonal;
+  c["rms2_pct"] = 100.0 * std::sqrt(0.5 * (there.rms * there.rms + back.rms * back.rms)) / bm.diagonal;
+}
+
+// ------------------------------------------------------------------------------------------------
+// Ours: uniform and adaptive
+
+struct Stages {
+  double curvature = 0, speed = 0, engine = 0, sampling = 0, delaunay = 0;
+  double total() const { return curvature + speed + engine + sampling + delaunay; }
+  void operator+=(const Stages& o) {
+    curvature += o.curvature;
+    speed += o.speed;
+    engine += o.engine;
+    sampling += o.sampling;
+    delaunay += o.delaunay;
+  }
+};
+
+struct Run {
+  gr::DelaunayResult result;
+  Stages seconds;
+};
+
+/// Sampling + triangulation on a fresh engine under `metric`; the error status on failure.
+gr::Expected<Run> remesh(const gr::TriMesh& mesh, const gr::Metric& metric, int target) {
+  Run run;
+  gr::FpsParams fps;
+  fps.targetCount = target;
+  const double t0 = threadSeconds();
+  gr::FastMarcher marcher(mesh, metric);
+  const double t1 = threadSeconds();
+  gr::Expected<gr::FpsResult> s = gr::farthestPointSampling(marcher, fps);
+  const double t2 = threadSeconds();
+  if (!s) return gr::Status{s.status().code, "sampling: " + s.status().message};
+  gr::Expected<gr::DelaunayResult> d = gr::geodesicDelaunay(marcher, std::move(s->points));
+  const double t3 = threadSeconds();
+  if (!d) return gr::Status{d.status().code, "triangulation: " + d.status().message};
+  run.result = std::move(*d);
+  run.seconds.engine = t1 - t0;
+  run.seconds.sampling = t2 - t1;
+  run.seconds.delaunay = t3 - t2;
+  return run;
+}
+
+/// Curvature + speed + the pipeline: what the adaptive filter computes.
+gr::Expected<Run> remeshAdaptive(const gr::TriMesh& mesh, int target, gr::Metric* metricOut = nullptr) {
+  const double t0 = threadSeconds();
+  gr::CurvatureParams cp;
+  cp.radius = kRadiusInEdges * mesh.meanEdgeLength();
+  gr::Expected<gr::CurvatureResult> tau = gr::totalCurvature(mesh, cp);
+  const double t1 = threadSeconds();
+  if (!tau) return gr::Status{tau.status().code, "curvature: " + tau.status().message};
+  gr::SpeedFieldParams sp;
+  sp.mapping = gr::SpeedMapping::Attractive;
+  sp.strength = kStrength;
+  gr::Expected<gr::SpeedFieldResult> speed = gr::speedFromField(mesh, tau->tau, sp);
+  const double t2 = threadSeconds();
+  if (!speed) return gr::Status{speed.status().code, "speed: " + speed.status().message};
+  gr::Expected<Run> run = remesh(mesh, speed->metric, target);
+  if (!run) return run;
+  run->seconds.curvature = t1 - t0;
+  run->seconds.speed = t2 - t1;
+  if (metricOut) *metricOut = speed->metric;
+  return run;
+}
+
+/// The uniform result's final vertex count per case: what the other methods are matched to.
+std::map<std::string, int>& uniformCounts() {
+  static std::map<std::string, int> counts;
+  return counts;
+}
+
+/// The count of that case, from its Uniform benchmark, or from an untimed run if it was filtered out.
+std::optional<int> uniformCount(benchmark::State& state, const Case& c, BenchMesh& bm) {
+  std::map<std::string, int>& counts = uniformCounts();
+  auto found = counts.find(c.key());
+  if (found != counts.end()) return found->second;
+  gr::Expected<Run> run = remesh(bm.tri, gr::Metric::uniform(), targetCount(c, bm));
+  if (!run) {
+    state.SkipWithError(("uniform: " + run.status().message).c_str());
+    return std::nullopt;
+  }
+  return counts[c.key()] = run->result.mesh.vertexCount();
+}
+
+void setStageCounters(benchmark::State& state, const Stages& sum) {
+  const auto perRun = [](double s) { return benchmark::Counter(1e3 * s, benchmark::Counter::kAvgIterations); };
+  state.counters["curvature_ms"] = perRun(sum.curvature);
+  state.counters["speed_ms"] = perRun(sum.speed);
+  state.counters["engine_ms"] = perRun(sum.engine);
+  state.counters["sampling_ms"] = perRun(sum.sampling);
+  state.counters["delaunay_ms"] = perRun(sum.delaunay);
+}
+
+void BM_Uniform(benchmark::State& state, const Case& c) {
+  BenchMesh* bm = getMesh(state, c);
+  if (!bm) return;
+  const int target = targetCount(c, *bm);
+  Stages sum;
+  std::optional<Run> last;
+  for (auto _ : state) {
+    gr::Expected<Run> run = remesh(bm->tri, gr::Metric::uniform(), target);
+    if (!run) {
+      state.SkipWithError(run.status().message.c_str());
+      return;
+    }
+    sum += run->seconds;
+    last = std::move(*run);
+  }
+  setStageCounters(state, sum);
+  state.counters["target"] = target;
+  state.counters["added"] = last->result.addedSamples;
+  setQualityCounters(state, *bm, last->result.mesh);
+  uniformCounts()[c.key()] = last->result.mesh.vertexCount();
+}
+
+void BM_Adaptive(benchmark::State& state, const Case& c) {
+  BenchMesh* bm = getMesh(state, c);
+  if (!bm) return;
+  const std::optional<int> n = uniformCount(state, c, *bm);
+  if (!n) return;
+  // Untimed calibration of the target: the largest final count <= n, within 1% of it.
+  static std::map<std::string, std::pair<int, int>> calibrated;  // target, runs
+  auto& [target, runs] = calibrated[c.key()];
+  if (runs == 0) {
+    int t = *n, best = 0, bestCount = -1;
+    for (int k = 0; k < kAdaptiveCalibrationRuns; ++k) {
+      gr::Expected<Run> run = bm->adaptiveMetric ? remesh(bm->tri, *bm->adaptiveMetric, t)
+                                                 : remeshAdaptive(bm->tri, t, &bm->adaptiveMetric.emplace());
+      if (!run) {
+        state.SkipWithError(("adaptive: " + run.status().message).c_str());
+        return;
+      }
+      ++runs;
+      const int got = run->result.mesh.vertexCount();
+      if (got <= *n && got > bestCount) best = t, bestCount = got;
+      if (got <= *n && got >= (1.0 - kCountTolerance) * *n) break;
+      t = got > *n ? t - (got - *n) : t + std::max(1, (*n - got) / 2);
+    }
+    if (bestCount < 0) {
+      state.SkipWithError("adaptive: no target gave at most the uniform vertex count");
+      return;
+    }
+    target = best;
+  }
+  Stages sum;
+  std::optional<Run> last;
+  for (auto _ : state) {
+    gr::Expected<Run> run = remeshAdaptive(bm->tri, target);
+    if (!run) {
+      state.SkipWithError(run.status().message.c_str());
+      return;
+    }
+    sum += run->seconds;
+    last = std::move(*run);
+  }
+  setStageCounters(state, sum);
+  state.counters["target"] = target;
+  state.counters["calibration_runs"] = runs;
+  state.counters["uniform_vertices"] = *n;
+  state.counters["added"] = last->result.addedSamples;
+  setQualityCounters(state, *bm, last->result.mesh);
+}
+
+// ------------------------------------------------------------------------------------------------
+// CGAL isotropic remeshing (as bench_remesh)
+
+SurfaceMesh* cgalMesh(benchmark::State& state, BenchMesh& bm) {
+  if (bm.cgal) return bm.cgal.get();
+  auto m = std::make_unique<SurfaceMesh>();
+  for (const gr::Vec3& p : bm.tri.positions) m->add_vertex(Kernel::Point_3(p.x(), p.y(), p.z()));
+  for (int f = 0; f < bm.tri.faceCount(); ++f) {
+    const gr::Tri& t = bm.tri.triangles[f];
+    if (m->add_face(SmVertex(t[0]), SmVertex(t[1]), SmVertex(t[2])) == SurfaceMesh::null_face()) {
+      state.SkipWithError(("CGAL Surface_mesh rejects face " + std::to_string(f)).c_str());
+      return nullptr;
+    }
+  }
+  bm.cgal = std::move(m);
+  return bm.cgal.get();
+}
+
+void remeshCgal(SurfaceMesh& m, double edgeLength) {
+  PMP::isotropic_remeshing(faces(m), edgeLength, m,
+                           CGAL::parameters::number_of_iterations(kCgalIterations).protect_constraints(false));
+}
+
+gr::Expected<gr::TriMesh> toTriMesh(SurfaceMesh& m) {
+  m.collect_garbage();
+  std::vector<gr::Vec3> positions;
+  positions.reserve(m.number_of_vertices());
+  for (SmVertex v : m.vertices()) {
+    const Kernel::Point_3& p = m.point(v);
+    positions.emplace_back(p.x(), p.y(), p.z());
+  }
+  std::vector<gr::Tri> triangles;
+  triangles.reserve(m.number_of_faces());
+  for (auto f : m.faces()) {
+    gr::Tri t{};
+    int k = 0;
+    for (SmVertex v : CGAL::vertices_around_face(m.halfedge(f), m)) t[k++ % 3] = static_cast<int>(v.idx());
+    triangles.push_back(t);
+  }
+  return gr::buildTriMesh(std::move(positions), std::move(triangles));
+}
+
+void BM_Cgal(benchmark::State& state, const Case& c) {
+  BenchMesh* bm = getMesh(state, c);
+  if (!bm) return;
+  SurfaceMesh* input = cgalMesh(state, *bm);
+  if (!input) return;
+  const std::optional<int> count = uniformCount(state, c, *bm);
+  if (!count) return;
+  const double n = *count;
+  static std::map<std::string, std::pair<double, int>> calibrated;  // length, runs
+  auto& [length, runs] = calibrated[c.key()];
+  if (runs == 0) {
+    length = std::sqrt(2.0 * PMP::area(*input) / (std::sqrt(3.0) * n));
+    while (runs < kCgalCalibrationRuns) {
+      SurfaceMesh m = *input;
+      remeshCgal(m, length);
+      ++runs;
+      const double obtained = m.number_of_vertices();
+      if (std::abs(obtained / n - 1.0) <= kCountTolerance) break;
+      length *= std::sqrt(obtained / n);
+    }
+  }
+  std::optional<SurfaceMesh> out;
+  for (auto _ : state) {
+    state.PauseTiming();
+    SurfaceMesh m = *input;
+    state.ResumeTiming();
+    remeshCgal(m, length);
+    state.PauseTiming();
+    out = std::move(m);
+    state.ResumeTiming();
+  }
+  gr::Expected<gr::TriMesh> tri = toTriMesh(*out);
+  if (!tri) {
+    state.SkipWithError(("CGAL output: " + tri.status().message).c_str());
+    return;
+  }
+  state.counters["edge_length"] = length;
+  state.counters["calibration_runs"] = runs;
+  state.counters["uniform_vertices"] = n;
+  setQualityCounters(state, *bm, *tri);
+}
+
+// ------------------------------------------------------------------------------------------------
+// MeshLab: Quadric Edge Collapse Decimation through the system meshlabserver
+
+/// The filter's script: TargetFaceNum set, every other parameter at MeshLab 2020.09's default
+/// (src/meshlabplugins/filter_meshing/meshfilter.cpp).
+std::string quadricScript(int targetFaces) {
+  return "<!DOCTYPE FilterScript>\n<FilterScript>\n"
+         " <filter name=\"Simplification: Quadric Edge Collapse Decimation\">\n"
+         "  <Param type=\"RichInt\" name=\"TargetFaceNum\" value=\"" + std::to_string(targetFaces) + "\"/>\n"
+         "  <Param type=\"RichFloat\" name=\"TargetPerc\" value=\"0\"/>\n"
+         "  <Param type=\"RichFloat\" name=\"QualityThr\" value=\"0.3\"/>\n"
+         "  <Param type=\"RichBool\" name=\"PreserveBoundary\" value=\"false\"/>\n"
+         "  <Param type=\"RichFloat\" name=\"BoundaryWeight\" value=\"1\"/>\n"
+         "  <Param type=\"RichBool\" name=\"PreserveNormal\" value=\"false\"/>\n"
+         "  <Param type=\"RichBool\" name=\"PreserveTopology\" value=\"false\"/>\n"
+         "  <Param type=\"RichBool\" name=\"OptimalPlacement\" value=\"true\"/>\n"
+         "  <Param type=\"RichBool\" name=\"PlanarQuadric\" value=\"false\"/>\n"
+         "  <Param type=\"RichFloat\" name=\"PlanarWeight\" value=\"0.001\"/>\n"
+         "  <Param type=\"RichBool\" name=\"QualityWeight\" value=\"false\"/>\n"
+         "  <Param type=\"RichBool\" name=\"AutoClean\" value=\"true\"/>\n"
+         "  <Param type=\"RichBool\" name=\"Selected\" value=\"false\"/>\n"
+         " </filter>\n</FilterScript>\n";
+}
+
+void BM_MeshLabQuadric(benchmark::State& state, const Case& c) {
+  BenchMesh* bm = getMesh(state, c);
+  if (!bm) return;
+  const std::optional<int> n = uniformCount(state, c, *bm);
+  if (!n) return;
+  char dirTemplate[] = "/tmp/bench_adaptive_XXXXXX";
+  if (!mkdtemp(dirTemplate)) {
+    state.SkipWithError("mkdtemp failed");
+    return;
+  }
+  const std::string dir = dirTemplate, script = dir + "/script.mlx", out = dir + "/out.off", log = dir + "/log.txt";
+  const int targetFaces = 2 * *n - 4;
+  std::ofstream(script) << quadricScript(targetFaces);
+  const std::string command = "xvfb-run -a meshlabserver -i '" + bm->path + "' -o '" + out + "' -s '" + script +
+                              "' > '" + log + "' 2>&1";
+  for (auto _ : state) {
+    std::remove(out.c_str());
+    const auto t0 = std::chrono::steady_clock::now();
+    const int rc = std::system(command.c_str());
+    const auto t1 = std::chrono::steady_clock::now();
+    if (rc != 0) {
+      state.SkipWithError(("meshlabserver failed (rc " + std::to_string(rc) + "), see " + log).c_str());
+      return;
+    }
+    state.SetIterationTime(std::chrono::duration<double>(t1 - t0).count());
+  }
+  gr::Expected<gr::TriMesh> tri = gr::loadTriMesh(out);
+  if (!tri) {
+    state.SkipWithError(("MeshLab output " + out + ": " + tri.status().message).c_str());
+    return;
+  }
+  state.counters["target_faces"] = targetFaces;
+  state.counters["uniform_vertices"] = *n;
+  setQualityCounters(state, *bm, *tri);
+  std::remove(out.c_str());
+  std::remove(script.c_str());
+  std::remove(log.c_str());
+  rmdir(dir.c_str());
+}
+
+// ------------------------------------------------------------------------------------------------
+
+constexpr int kRepetitions = 3;
+constexpr double kMinTime = 0.2;
+
+void registerAll() {
+  for (const Case& c : kCases) {
+    const auto name = [&](const char* family) { return std::string(family) + "/" + c.key(); };
+    // Uniform first: it records the vertex count the others are matched to.
+    benchmark::RegisterBenchmark(name("Uniform").c_str(), BM_Uniform, c)
+        ->Unit(benchmark::kMillisecond)->MinTime(kMinTime)->Repetitions(kRepetitions)->DisplayAggregatesOnly(true);
+    benchmark::RegisterBenchmark(name("Adaptive").c_str(), BM_Adaptive, c)
+        ->Unit(benchmark::kMillisecond)->MinTime(kMinTime)->Repetitions(kRepetitions)->DisplayAggregatesOnly(true);
+    benchmark::RegisterBenchmark(name("Cgal").c_str(), BM_Cgal, c)
+        ->Unit(benchmark::kMillisecond)->MinTime(kMinTime)->Repetitions(kRepetitions)->DisplayAggregatesOnly(true);
+    // One process per iteration (about 0.3-1 s each): wall time, 3 single runs.
+    benchmark::RegisterBenchmark(name("MeshLabQECD").c_str(), BM_MeshLabQuadric, c)
+        ->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(1)->Repetitions(kRepetitions)
+        ->DisplayAggregatesOnly(true);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  registerAll();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

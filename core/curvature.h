@@ -7,10 +7,12 @@
 //     T(B) = 1/area(B) * sum over edges e of  beta(e) |e ∩ B| ê êᵀ
 //
 // where beta(e) is the signed dihedral angle at e (positive where the surface is convex for its
-// orientation) and ê the unit edge direction. The eigenvector of T closest to the vertex normal is
-// dropped; the two other eigenvalues are the principal curvatures (their eigenvectors are the
-// principal directions swapped, which is why they are not returned). k1 is the one of larger
-// magnitude. Boundary and non-manifold edges have no dihedral angle and contribute nothing.
+// orientation) and ê the unit edge direction. The eigenvector of T closest to the vertex normal
+// (area-weighted face normals) is dropped, as in vcglib; on smooth surfaces and sharp edges it is
+// also the eigenvalue of smallest magnitude, Cohen-Steiner & Morvan's rule. The two other
+// eigenvalues are the principal curvatures (their eigenvectors are the principal directions
+// swapped, which is why they are not returned); k1 is the one of larger magnitude. Boundary and
+// non-manifold edges have no dihedral angle and contribute nothing.
 //
 // How B is discretised (fast, and exactly consistent between numerator and area):
 //  - each edge gives half of beta |e| ê êᵀ to each endpoint, each face a third of its area to each
@@ -45,10 +47,13 @@
 // non-manifold edges are accepted (they contribute no curvature). Edges whose two faces disagree
 // on orientation measure the angle as if the second face were flipped.
 // Cost: O(F) for the masses, then O(V * n * valence) for the neighbourhoods, n = vertices per
-// ball (about 7 for the 1-ring, 20 for r = 2 h, 40 for r = 3 h, h = mean edge length), plus a
-// closed-form 3x3 eigen-decomposition per vertex (Eigen's computeDirect: where two eigenvalues
-// coincide, e.g. 0 and 0 on a cylinder or a sharp edge, its relative error is about 1e-8).
-// Memory: about 110 bytes per vertex.
+// ball (about 7 for the 1-ring, 10 for the default r = h, 20-30 for r = 2 h, 40-55 for r = 3 h,
+// h = mean edge length), plus closed-form 3x3 eigenvalues per vertex (Eigen's computeDirect:
+// where two eigenvalues coincide, e.g. 0 and 0 on a cylinder or a sharp edge, its relative error
+// is about 1e-8). Internally the vertices are renumbered in the order the faces first reach them
+// (face order is usually spatially coherent, vertex order after subdivision is not), so a ball's
+// vertices are near each other in memory. About 0.7 s per million vertices at the default radius
+// on one core (docs/BENCHMARKS.md). Memory: about 300 bytes per vertex, freed on return.
 #pragma once
 
 #include <vector>

@@ -92,8 +92,8 @@ TEST(Curvature, SphereHasTotalCurvatureTwoOverR) {
       SCOPED_TRACE("level " + std::to_string(level) + ", radius " + std::to_string(radiusInEdges) + " h");
       const CurvatureResult c = curvatureOf(m, radiusInEdges * h);
       const double err = maxRelativeError(c.tau, 2.0 / R, allVertices(m));
-      std::printf("sphere R=%.1f, %d vertices, r = %.3g h = %.3f R: max |tau - 2/R| / (2/R) = %.4f, ball %.1f vertices\n",
-                  R, m.vertexCount(), radiusInEdges, radiusInEdges * h / R, err, c.meanNeighbourhoodSize);
+      std::printf("sphere R=%.1f, %d vertices, r = %.3g h = %.3f R: max |tau - 2/R| / (2/R) = %.4f, "
+                  "ball %.1f vertices\n", R, m.vertexCount(), radiusInEdges, radiusInEdges * h / R, err, c.meanNeighbourhoodSize);
       EXPECT_LT(err, 0.05);
       // Both principal curvatures are +1/R (outward-facing triangles: convex is positive).
       EXPECT_LT(maxRelativeError(c.k1, 1.0 / R, allVertices(m)), 0.05);
@@ -353,7 +353,8 @@ TEST(Curvature, ScalesAsOneOverLengthAndIgnoresRigidMotion) {
   for (int v = 0; v < m.vertexCount(); ++v) {
     worstMoved = std::max(worstMoved, std::abs(moved.tau[v] * s - base.tau[v]) / scale);
     worstFlipped = std::max({worstFlipped, std::abs(flipped.tau[v] - base.tau[v]) / scale,
-                             std::abs(flipped.k1[v] + base.k1[v]) / scale, std::abs(flipped.k2[v] + base.k2[v]) / scale});
+                             std::abs(flipped.k1[v] + base.k1[v]) / scale,
+                             std::abs(flipped.k2[v] + base.k2[v]) / scale});
   }
   // Closed-form eigenvalues: relative error about 1e-8 where two coincide (header).
   EXPECT_LT(worstMoved, 1e-7);
@@ -379,6 +380,44 @@ TEST(Curvature, RadiusBelowTheOneRingUsesTheOneRing) {
   const CurvatureResult byDefault = curvatureOf(m, 0.0);
   EXPECT_DOUBLE_EQ(byDefault.radius, h);
   EXPECT_EQ(byDefault.tau, curvatureOf(m, h).tau);
+}
+
+TEST(Curvature, AcceptsOddMeshesAndKeepsTheirEffectLocal) {
+  // One face of a sphere turned over (3 edges whose faces disagree on orientation), a fourth face
+  // on one edge (non-manifold), a zero-area face and an isolated vertex: every tau is finite, the
+  // isolated vertex gets 0, and vertices whose balls do not reach the odd places keep the tau of
+  // the clean sphere.
+  const TriMesh clean = test::icosphere(3, 2.0);
+  const double h = clean.meanEdgeLength();
+  std::vector<Vec3> pos = clean.positions;
+  std::vector<Tri> tris = clean.triangles;
+  std::swap(tris[0][1], tris[0][2]);                          // turned over
+  const Tri& t5 = clean.triangles[5];
+  pos.push_back(1.2 * pos[t5[0]]);                            // a fin on edge t5[0]-t5[1]
+  tris.push_back({t5[1], t5[0], static_cast<int>(pos.size()) - 1});
+  const Tri& t9 = clean.triangles[9];
+  pos.push_back(0.5 * (pos[t9[0]] + pos[t9[1]]));             // zero-area face on edge t9[0]-t9[1]
+  tris.push_back({t9[0], t9[1], static_cast<int>(pos.size()) - 1});
+  pos.push_back(Vec3(9, 9, 9));                               // isolated
+  const TriMesh m = std::move(buildTriMesh(pos, tris)).value();
+  ASSERT_GT(m.topology.inconsistentEdges, 0);
+  ASSERT_GT(m.topology.nonManifoldEdges, 0);
+  const CurvatureResult odd = curvatureOf(m, 2.0 * h);
+  const CurvatureResult reference = curvatureOf(clean, 2.0 * h);
+  EXPECT_EQ(odd.tau.back(), 0.0);
+  std::vector<Vec3> oddPlaces;
+  for (int f : {0, 5, 9})
+    for (int k = 0; k < 3; ++k) oddPlaces.push_back(clean.positions[clean.triangles[f][k]]);
+  int far = 0;
+  for (int v = 0; v < clean.vertexCount(); ++v) {
+    ASSERT_TRUE(std::isfinite(odd.tau[v])) << "vertex " << v;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Vec3& p : oddPlaces) nearest = std::min(nearest, (clean.positions[v] - p).norm());
+    if (nearest < 4.0 * h) continue;  // ball 2 h plus the neighbours' cells and normals
+    ++far;
+    EXPECT_NEAR(odd.tau[v], reference.tau[v], 1e-9 * reference.tau[v]) << "vertex " << v;
+  }
+  EXPECT_GT(far, clean.vertexCount() / 2);
 }
 
 TEST(Curvature, RejectsBadInput) {

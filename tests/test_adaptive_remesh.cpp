@@ -11,7 +11,7 @@
 // (b) Topology: the adaptive result is an edge- and vertex-manifold, oriented mesh with the input's
 //     components, genus and boundary loops, recounted independently of TriMesh (test::recount), on
 //     closed meshes, a high-genus knot, a mesh with holes and a synthetic two-component mesh.
-// Cost: about 11 s in RelWithDebInfo (bunny00's remeshings for the error test dominate).
+// Cost: about 7 s in RelWithDebInfo (bunny00's remeshings for the error test dominate).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -39,13 +39,14 @@
 // connectivity keeps B from jumping across a thin gap to another sheet of the surface, but it can
 // wrap around a thin plate's rim when the radius exceeds the plate's thickness. A Dijkstra ball
 // along edges would overestimate distances by up to 15% on a regular triangular grid (more on
-// irregular ones) and cost a heap per vertex; the Euclidean ball is exact on planes and costs only a queue.
+// irregular ones) and cost a heap per vertex; the Euclidean ball is exact on planes and costs only
+// a queue.
 // The tensor is built in 3D: with a radius comparable to 1/|k| the tilted far edges move part of
 // the curvature into the dropped normal eigenvalue (about (r k)^2 / 4 of it); keep r k small.
 //
 // Preconditions: a TriMesh from buildTriMesh (adjacency built). Zero-area faces, boundaries and
-// non-manifold edges are accepted (they contribute no curvature). Edges whose two faces disagree
-// on orientation measure the angle as if the second face were flipped.
+// non-manifold edges are accepted (they contribute no curvature). An edge whose two faces disagree
+// on orientation has its angle measured from the lower-numbered face, the other one flipped.
 // Cost: O(F) for the masses, then O(V * n * valence) for the neighbourhoods, n = vertices per
 // ball (about 7 for the 1-ring, 10 for the default r = h, 20-30 for r = 2 h, 40-55 for r = 3 h,
 // h = mean edge length), plus closed-form 3x3 eigenvalues per vertex (Eigen's computeDirect:

@@ -67,6 +67,15 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric)
       f->lab = length[c];
     }
   }
+  if (!uniform_) {
+    starCost_.resize(star_.size());
+    for (int i = 0; i < nv; ++i)
+      for (int k = starBegin_[i]; k < starBegin_[i + 1]; ++k) {
+        const StarFace& f = star_[k];
+        starCost_[k] = {0.5 * (P_[i] + P_[f.a]) * f.lva, 0.5 * (P_[i] + P_[f.b]) * f.lvb,
+                        (P_[i] + P_[f.a] + P_[f.b]) * (1.0 / 3.0)};
+      }
+  }
   splitSlot_.resize(splits_.splits.size());
   for (size_t i = 0; i < splits_.splits.size(); ++i) splitSlot_[i] = slotOf_[splits_.splits[i].vertex];
   node_.assign(nv, Node{kUnreached, 0, -1});
@@ -204,7 +213,8 @@ void FastMarcher::relax(int x, double u, int label) {
 }
 
 template <bool kUniform>
-void FastMarcher::offerTriangle(Candidate& best, int x, int s, int t, double lxs, double lxt, double lst) const {
+void FastMarcher::offerTriangle(Candidate& best, int /*x*/, int s, int t, double lxs, double lxt, double lst,
+                                [[maybe_unused]] double p) const {
   const double us = node_[s].u, ut = node_[t].u;
   if (std::max(us, ut) >= best.u) return;  // causal values are >= both: it cannot win
   const TriangleFrame frame = triangleFrame(lxs, lxt, lst);
@@ -212,8 +222,8 @@ void FastMarcher::offerTriangle(Candidate& best, int x, int s, int t, double lxs
   if constexpr (kUniform) {
     u = virtualSourceDistance(frame, us, ut);
   } else {
-    const double p = (P_[x] + P_[s] + P_[t]) * (1.0 / 3.0);
-    u = p * virtualSourceDistance(frame, us / p, ut / p);
+    const double q = 1.0 / p;  // distances in the triangle scale with its mean P
+    u = p * virtualSourceDistance(frame, us * q, ut * q);
   }
   // Causality: a value below a neighbour's would break the acceptance order (obtuse angles).
   // The label of the nearer vertex. Updates that mix two fronts are kept on purpose: skipping
@@ -227,33 +237,35 @@ void FastMarcher::scatter(int v) {
   // otherwise reload them from `this` after every store.
   Node* const node = node_.data();
   const StarFace* const star = star_.data();
+  const StarCost* const cost = kUniform ? nullptr : starCost_.data();
   const double uv = node[v].u;
   const int lv = node[v].label;
-  const auto edgeCost = [&](int x, double length) {
-    if constexpr (kUniform) return uv + length;
-    else return uv + 0.5 * (P_[v] + P_[x]) * length;
+  // The mean P of a virtual triangle (acute splits): read from P_ (rare).
+  const auto meanP = [this](int x, int s, int t) {
+    return kUniform ? 1.0 : (P_[x] + P_[s] + P_[t]) * (1.0 / 3.0);
   };
   // Triangles (v, a, b) around v: each offers a and b one candidate, the best of the edge
   // update, the triangle update and the virtual triangle of an acute split.
-  const StarFace* end = star + starBegin_[v + 1];
-  for (const StarFace* f = star + starBegin_[v]; f != end; ++f) {
+  const int first = starBegin_[v], last = starBegin_[v + 1];
+  for (int k = first; k < last; ++k) {
+    const StarFace* f = star + k;
     if (node[f->a].run != run_) {  // target a, third vertex b
-      Candidate best{edgeCost(f->a, f->lva), lv};
-      if (known(f->b)) offerTriangle<kUniform>(best, f->a, v, f->b, f->lva, f->lab, f->lvb);
+      Candidate best{uv + (kUniform ? f->lva : cost[k].edgeA), lv};
+      if (known(f->b)) offerTriangle<kUniform>(best, f->a, v, f->b, f->lva, f->lab, f->lvb, kUniform ? 1.0 : cost[k].face);
       if (f->splitAtA >= 0) {  // obtuse at a: the virtual triangle a, v, R (v is B of that corner)
         const AcuteSplit& sp = splits_.splits[f->splitAtA];
         const int r = splitSlot_[f->splitAtA];
-        if (known(r)) offerTriangle<kUniform>(best, f->a, v, r, f->lva, sp.lenXR, sp.lenBR);
+        if (known(r)) offerTriangle<kUniform>(best, f->a, v, r, f->lva, sp.lenXR, sp.lenBR, meanP(f->a, v, r));
       }
       if (best.u < node[f->a].u) push(f->a, best.u, best.label);
     }
     if (node[f->b].run != run_) {  // target b, third vertex a
-      Candidate best{edgeCost(f->b, f->lvb), lv};
-      if (known(f->a)) offerTriangle<kUniform>(best, f->b, v, f->a, f->lvb, f->lab, f->lva);
+      Candidate best{uv + (kUniform ? f->lvb : cost[k].edgeB), lv};
+      if (known(f->a)) offerTriangle<kUniform>(best, f->b, v, f->a, f->lvb, f->lab, f->lva, kUniform ? 1.0 : cost[k].face);
       if (f->splitAtB >= 0) {  // obtuse at b: v is A of that corner
         const AcuteSplit& sp = splits_.splits[f->splitAtB];
         const int r = splitSlot_[f->splitAtB];
-        if (known(r)) offerTriangle<kUniform>(best, f->b, v, r, f->lvb, sp.lenXR, sp.lenAR);
+        if (known(r)) offerTriangle<kUniform>(best, f->b, v, r, f->lvb, sp.lenXR, sp.lenAR, meanP(f->b, v, r));
       }
       if (best.u < node[f->b].u) push(f->b, best.u, best.label);
     }
@@ -266,8 +278,8 @@ void FastMarcher::scatter(int v) {
     if (node[x].run == run_) continue;
     const int a = slotOf_[mesh_.vertex(TriMesh::next(sp.corner))], b = slotOf_[mesh_.vertex(TriMesh::prev(sp.corner))];
     Candidate best{node[x].u, node[x].label};
-    if (known(a)) offerTriangle<kUniform>(best, x, a, v, sp.lenXA, sp.lenXR, sp.lenAR);
-    if (known(b)) offerTriangle<kUniform>(best, x, b, v, sp.lenXB, sp.lenXR, sp.lenBR);
+    if (known(a)) offerTriangle<kUniform>(best, x, a, v, sp.lenXA, sp.lenXR, sp.lenAR, meanP(x, a, v));
+    if (known(b)) offerTriangle<kUniform>(best, x, b, v, sp.lenXB, sp.lenXR, sp.lenBR, meanP(x, b, v));
     if (best.u < node[x].u) push(x, best.u, best.label);
   }
 }

@@ -106,9 +106,10 @@ class FastMarcher {
   bool known(int v) const { return node_[v].run != 0; }
   /// Offers x the value u (edge update) with the given label.
   void relax(int x, double u, int label);
-  /// Offers x the update of the (possibly virtual) triangle x, s, t; s and t are known.
+  /// Offers x the update of the (possibly virtual) triangle x, s, t; s and t are known. `p` is
+  /// the triangle's mean P (unused with a uniform metric).
   template <bool kUniform>
-  void offerTriangle(Candidate& best, int x, int s, int t, double lxs, double lxt, double lst) const;
+  void offerTriangle(Candidate& best, int x, int s, int t, double lxs, double lxt, double lst, double p) const;
   /// Updates the neighbours of the newly accepted vertex v.
   template <bool kUniform>
   void scatter(int v);
@@ -137,6 +138,13 @@ class FastMarcher {
   std::vector<int> vertexOf_;       ///< per slot
   std::vector<int> starBegin_;      ///< per slot, into star_
   std::vector<StarFace> star_;      ///< the faces around each slot (a, b are slots)
+  /// With a non-uniform metric, parallel to star_: the metric's edge costs and mean P of the
+  /// face, read in the same sequential order instead of P at two random neighbours.
+  struct StarCost {
+    double edgeA, edgeB;  ///< (P_v + P_a) / 2 * |va|, (P_v + P_b) / 2 * |vb|
+    double face;          ///< (P_v + P_a + P_b) / 3
+  };
+  std::vector<StarCost> starCost_;
   std::vector<int> splitSlot_;      ///< per acute split, the slot of its far vertex R
   /// Per-vertex state the hot loop reads together (one cache line for a neighbour).
   struct Node {

@@ -266,7 +266,7 @@ void BM_Cgal(benchmark::State& state, const Case& c) {
   // The vertex count to match: ours, run untimed if its benchmark was filtered out.
   auto found = oursVertexCount().find(c.key());
   if (found == oursVertexCount().end()) {
-    std::optional<OursRun> run = runOurs(state, *bm, targetCount(c, *bm));
+    std::optional<OursRun> run = runOurs(state, *bm, targetCount(c, *bm), false);
     if (!run) return;
     found = oursVertexCount().emplace(c.key(), run->result.mesh.vertexCount()).first;
   }

@@ -25,7 +25,7 @@ namespace gr {
 struct DelaunayFlipParams {
   /// Largest angle between the normals of the two faces of an edge (before and after the flip)
   /// for the edge to be flipped, in degrees: edges on sharper creases are features and stay.
-  double featureAngleDegrees = 20.0;
+  double featureAngleDegrees = 30.0;
   /// A flip must lower the larger of the two facing angles' sum by at least this (degrees), so
   /// nearly cocircular quads do not flip back and forth.
   double toleranceDegrees = 1e-6;

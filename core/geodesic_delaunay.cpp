@@ -219,10 +219,23 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
             for (int w : {mesh.vertex(TriMesh::next(*k)), mesh.vertex(TriMesh::prev(*k))})
               if (label[w] >= 0) isBad[label[w]] = 1;
       }
+    // Farthest first, as the sampling would; a candidate nearer to a sample added in this round
+    // than to the existing ones is left for the next round (adjacent bad cells have their
+    // farthest vertices around the same Voronoi vertex: adding all of them would cluster).
+    std::vector<int> candidates;
+    for (int c = 0; c < cells; ++c)
+      if (isBad[c] && farthest[c] >= 0 && marcher.distance()[farthest[c]] > 0.0) candidates.push_back(farthest[c]);
+    std::sort(candidates.begin(), candidates.end(),
+              [&](int a, int b) { return marcher.distance()[a] > marcher.distance()[b]; });
+    std::vector<Vec3> addedPositions;
     int added = 0;
-    for (int c = 0; c < cells; ++c) {
-      const int v = farthest[c];
-      if (!isBad[c] || v < 0 || marcher.distance()[v] <= 0.0) continue;
+    for (int v : candidates) {
+      const Vec3& p = mesh.positions[v];
+      const double u = marcher.distance()[v];
+      bool covered = false;
+      for (const Vec3& q : addedPositions) covered = covered || (p - q).squaredNorm() < u * u;
+      if (covered) continue;
+      addedPositions.push_back(p);
       samples.push_back(SurfacePoint::atVertex(v));
       if (Status s = marcher.addSource(v, static_cast<int>(samples.size()) - 1); !s) return s;
       ++added;

@@ -57,7 +57,15 @@ print()
 print("| mesh | target | method | vertices | time | curvature | sampling | triangulation | Hausdorff % "
       "| RMS % | H vs uniform | RMS vs uniform | min angle | % < 30° |")
 print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
-for (family, mesh, target), rows in runs.items():
+# Interleaved repetitions come in random order: print by mesh, count, then method.
+family_order = ["Uniform", "Adaptive", "AdaptiveDefaultRadius", "Cgal", "MeshLabQECD"]
+mesh_order = ["fandisk", "bunny00"]
+def row_key(key):
+    family, mesh, target = key
+    return (mesh_order.index(mesh) if mesh in mesh_order else len(mesh_order), mesh,
+            int("".join(ch for ch in target if ch.isdigit()) or 0),
+            family_order.index(family) if family in family_order else len(family_order))
+for (family, mesh, target), rows in sorted(runs.items(), key=lambda kv: row_key(kv[0])):
     r = rows[0]
     err = next((x.get("error_message", "error") for x in rows if x.get("error_occurred")), None)
     if err:
@@ -73,7 +81,7 @@ for (family, mesh, target), rows in runs.items():
           f"| {r['hausdorff2_pct']:.3f} | {r['rms2_pct']:.4f} | {hu} | {ru} "
           f"| {r['angle_min']:.1f}° | {r['lt30_pct']:.1f} |")
 print()
-for mesh, target in sorted({(m, tg) for (_, m, tg) in runs}):
+for mesh, target in sorted({(m, tg) for (_, m, tg) in runs}, key=lambda mt: row_key(("Uniform",) + mt)):
     u = runs.get(("Uniform", mesh, target))
     for fam, what in (("Adaptive", "radius 2 edges"), ("AdaptiveDefaultRadius", "radius 1 edge, the filter's default")):
         a = runs.get((fam, mesh, target))

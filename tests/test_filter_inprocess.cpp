@@ -431,6 +431,37 @@ TEST_F(FilterInProcess, AdaptiveRemeshBadFieldsLeaveTheDocumentAlone) {
   EXPECT_EQ(doc.meshList.size(), 1) << "a failed filter added a layer";
 }
 
+// The paper's texture-driven example (3.3): a colour edge (white for x < 0, black beyond) on
+// fandisk; Attractive on the colour gradient gathers vertices along the edge.
+TEST_F(FilterInProcess, AdaptiveRemeshFromColorGradient) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  mm->updateDataMask(MeshModel::MM_VERTCOLOR);
+  for (auto& v : mm->cm.vert) v.C() = v.cP()[0] < 0 ? vcg::Color4b::White : vcg::Color4b::Black;
+  const double h = fandisk.meanEdgeLength();
+  const auto shareNearEdge = [&](const MeshModel& out) {
+    int near = 0;
+    for (const auto& v : out.cm.vert) near += std::abs(v.cP()[0]) < 2 * h;
+    return double(near) / out.cm.vn;
+  };
+  use("Remeshing: Geodesic Uniform");
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(647));
+  ASSERT_TRUE(apply()) << logText();
+  const double uniformShare = shareNearEdge(*doc.mm());
+  doc.setCurrentMesh(mm->id());
+  use("Remeshing: Geodesic Adaptive");
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(647));
+  params.setValue(filters::param::kField, EnumValue(2));
+  ASSERT_TRUE(apply()) << logText();
+  const double adaptiveShare = shareNearEdge(*doc.mm());
+  std::printf("share of output vertices within 2 edge lengths of the colour edge: uniform %.3f, adaptive %.3f\n",
+              uniformShare, adaptiveShare);
+  EXPECT_GT(adaptiveShare, 2.0 * uniformShare);
+  EXPECT_NE(logText().find("Field: colour intensity gradient"), std::string::npos) << logText();
+}
+
 // Any filter's quality drives it: a quality field (here Direct on q = x) is read and logged.
 TEST_F(FilterInProcess, AdaptiveRemeshFromVertexQuality) {
   const TriMesh fandisk = test::loadRealMesh("fandisk.off");

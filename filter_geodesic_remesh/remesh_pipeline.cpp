@@ -124,6 +124,7 @@ Status remeshToNewLayer(MeshDocument& doc, const CurrentMesh& current, const Rem
           (result->droppedSamples > 0 ? ", " + std::to_string(result->droppedSamples) + " left out (nearest to no vertex)"
                                       : std::string()) +
           "; covering radius " + formatNumber(samples->coveringRadius, "%.4g") +
+          (request.metric.isUniform() ? std::string() : " (a travel time: distance over speed)") +
           (result->flippedEdges > 0 ? "; " + std::to_string(result->flippedEdges) + " edges flipped to Delaunay"
                                     : std::string()));
   ctx.log("Topology kept: " + std::to_string(result->mesh.topology.components) + " components, genus " +

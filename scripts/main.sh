@@ -31,7 +31,7 @@ run() {  # run <script.mlx> <output.ply> <what the output holds>
   set -e
   # MeshLab's own log lines of the run (noise and progress messages filtered out).
   echo "$log" | grep -vE "^LOG: |XDG_RUNTIME_DIR|no additional memory|^Loading Plugins|^Total [0-9]+ (filtering|io)|Current Plugins Dir|^$" |
-    sed -E 's/(Farthest point sampling|Fast marching|Geodesic Delaunay repair)+//g' | sed 's/^/  /'
+    sed -E 's/(Farthest point sampling|Fast marching|Geodesic Delaunay repair|curvature)+//g' | sed 's/^/  /'
   echo "== exit code $rc"
   [ $rc -eq 0 ] && [ -s "$out" ] || { echo "main: meshlabserver failed" >&2; exit 1; }
   local nv nf

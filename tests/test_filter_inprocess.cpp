@@ -484,6 +484,27 @@ TEST_F(FilterInProcess, AdaptiveRemeshFromVertexQuality) {
   EXPECT_GT(low, high);
 }
 
+TEST_F(FilterInProcess, TotalCurvatureBadInputLeavesTheDocumentAlone) {
+  use("Compute Total Curvature (Normal Cycle) into Vertex Quality");
+  const TriMesh grid = test::planeGrid(4);
+  MeshModel* cloud = addMesh(doc, grid.positions, {});
+  declare(*cloud);
+  expectCleanFailure(*cloud, "the mesh has no faces");
+  MeshModel* nonManifold =
+      addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  declare(*nonManifold);
+  expectCleanFailure(*nonManifold, "non-manifold edges");
+  MeshModel* nan = addMesh(doc, grid.positions, grid.triangles);
+  nan->cm.vert[3].P()[1] = std::numeric_limits<float>::quiet_NaN();
+  declare(*nan);
+  expectCleanFailure(*nan, "non-finite coordinate");
+  MeshModel* good = addMesh(doc, grid.positions, grid.triangles);
+  declare(*good);
+  params.setValue(filters::param::kCurvatureRadius, AbsPercValue(-1.0f));
+  expectCleanFailure(*good, "curvature radius");
+  EXPECT_EQ(doc.meshList.size(), 4) << "a failed filter added a layer";
+}
+
 TEST_F(FilterInProcess, TotalCurvatureOfASphereIsTwoOverR) {
   const double r = 2.5;
   const TriMesh sphere = test::icosphere(5, r);

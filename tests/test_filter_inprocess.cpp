@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <set>
@@ -62,6 +63,15 @@ struct Snapshot {
                       [](float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; });
   }
 };
+
+/// The number just before `words` in the log (e.g. "6 added to make"), or -1000 if absent.
+int numberBeforeInLog(const std::string& log, const std::string& words) {
+  const size_t at = log.find(words);
+  if (at == std::string::npos || at < 2) return -1000;
+  size_t start = log.rfind(' ', at - 2);
+  start = start == std::string::npos ? 0 : start + 1;
+  return std::atoi(log.substr(start, at - start).c_str());
+}
 
 class FilterInProcess : public ::testing::Test {
  protected:
@@ -460,6 +470,23 @@ TEST_F(FilterInProcess, AdaptiveRemeshFromColorGradient) {
               uniformShare, adaptiveShare);
   EXPECT_GT(adaptiveShare, 2.0 * uniformShare);
   EXPECT_NE(logText().find("Field: colour intensity gradient"), std::string::npos) << logText();
+}
+
+// A constant quality is not an error: the remeshing falls back to a uniform speed and says so.
+TEST_F(FilterInProcess, AdaptiveRemeshOnAConstantFieldFallsBackToUniform) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  for (auto& v : mm->cm.vert) v.Q() = 2.5f;
+  use("Remeshing: Geodesic Adaptive");
+  declare(*mm);
+  params.setValue(filters::param::kField, EnumValue(0));
+  params.setValue(filters::param::kTargetVertices, IntValue(300));
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_NE(logText().find("the field is constant"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("uniform speed"), std::string::npos) << logText();
+  EXPECT_EQ(doc.meshList.size(), 2);
+  EXPECT_EQ(doc.mm()->cm.vn, 300 + numberBeforeInLog(logText(), "added to make"));
 }
 
 // Any filter's quality drives it: a quality field (here Direct on q = x) is read and logged.

@@ -78,6 +78,18 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric)
   }
   splitSlot_.resize(splits_.splits.size());
   for (size_t i = 0; i < splits_.splits.size(); ++i) splitSlot_[i] = slotOf_[splits_.splits[i].vertex];
+  farSplitBegin_.assign(nv + 1, 0);
+  farSplits_.reserve(splits_.splits.size());
+  for (int i = 0; i < nv; ++i) {
+    const int vertex = vertexOf_[i];
+    for (int k = splits_.byVertexBegin[vertex]; k < splits_.byVertexBegin[vertex + 1]; ++k) {
+      const AcuteSplit& sp = splits_.splits[splits_.byVertex[k]];
+      farSplits_.push_back({slotOf_[mesh.vertex(sp.corner)], slotOf_[mesh.vertex(TriMesh::next(sp.corner))],
+                            slotOf_[mesh.vertex(TriMesh::prev(sp.corner))], sp.lenXA, sp.lenXB, sp.lenXR, sp.lenAR,
+                            sp.lenBR});
+    }
+    farSplitBegin_[i + 1] = static_cast<int>(farSplits_.size());
+  }
   node_.assign(nv, Node{kUnreached, 0, -1});
   U_.assign(nv, kUnreached);
   label_.assign(nv, -1);
@@ -271,12 +283,10 @@ void FastMarcher::scatter(int v) {
     }
   }
   // v as the far vertex R of acute splits: the virtual triangles X, A, R and X, B, R.
-  const int vertex = vertexOf_[v];
-  for (int i = splits_.byVertexBegin[vertex]; i < splits_.byVertexBegin[vertex + 1]; ++i) {
-    const AcuteSplit& sp = splits_.splits[splits_.byVertex[i]];
-    const int x = slotOf_[mesh_.vertex(sp.corner)];
+  for (int i = farSplitBegin_[v]; i < farSplitBegin_[v + 1]; ++i) {
+    const FarSplit& sp = farSplits_[i];
+    const int x = sp.x, a = sp.a, b = sp.b;
     if (node[x].run == run_) continue;
-    const int a = slotOf_[mesh_.vertex(TriMesh::next(sp.corner))], b = slotOf_[mesh_.vertex(TriMesh::prev(sp.corner))];
     Candidate best{node[x].u, node[x].label};
     if (known(a)) offerTriangle<kUniform>(best, x, a, v, sp.lenXA, sp.lenXR, sp.lenAR, meanP(x, a, v));
     if (known(b)) offerTriangle<kUniform>(best, x, b, v, sp.lenXB, sp.lenXR, sp.lenBR, meanP(x, b, v));

@@ -146,6 +146,14 @@ class FastMarcher {
   };
   std::vector<StarCost> starCost_;
   std::vector<int> splitSlot_;      ///< per acute split, the slot of its far vertex R
+  /// The acute splits whose far vertex R is a given slot, in slot order (CSR), with the slots of
+  /// X, A, B and the lengths copied in: the loop over them reads one contiguous record each.
+  struct FarSplit {
+    int x, a, b;
+    double lenXA, lenXB, lenXR, lenAR, lenBR;
+  };
+  std::vector<int> farSplitBegin_;
+  std::vector<FarSplit> farSplits_;
   /// Per-vertex state the hot loop reads together (one cache line for a neighbour).
   struct Node {
     double u;   ///< U, tentative while in the heap

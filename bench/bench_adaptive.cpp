@@ -31,7 +31,6 @@
 #include <benchmark/benchmark.h>
 
 #include <stdlib.h>
-#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -46,11 +45,7 @@
 #include <utility>
 #include <vector>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/remesh.h>
-#include <CGAL/Surface_mesh.h>
-
+#include "bench/bench_support.h"
 #include "core/curvature.h"
 #include "core/evaluation.h"
 #include "core/farthest_point_sampling.h"
@@ -63,10 +58,8 @@
 
 namespace {
 
-namespace PMP = CGAL::Polygon_mesh_processing;
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
-using SmVertex = SurfaceMesh::Vertex_index;
+using gr::bench::SurfaceMesh;
+using gr::bench::threadSeconds;
 
 constexpr double kStrength = 16.0;      ///< mu of the Attractive mapping
 constexpr double kRadiusInEdges = 2.0;  ///< curvature ball radius, in mean edge lengths
@@ -75,11 +68,6 @@ constexpr double kCountTolerance = 0.01;
 constexpr int kCgalIterations = 3;
 constexpr int kCgalCalibrationRuns = 3;
 
-double threadSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 struct Case {
   const char* mesh;   ///< name in the benchmark
@@ -129,15 +117,15 @@ int targetCount(const Case& c, const BenchMesh& bm) {
 
 void setQualityCounters(benchmark::State& state, const BenchMesh& bm, const gr::TriMesh& out) {
   const gr::AngleStatistics a = gr::angleStatistics(out);
-  const gr::SurfaceDistance there = gr::surfaceDistance(out, bm.tri), back = gr::surfaceDistance(bm.tri, out);
+  const gr::bench::TwoSidedDistance both = gr::bench::twoSidedDistance(out, bm.tri);
   auto& c = state.counters;
   c["vertices_in"] = bm.tri.vertexCount();
   c["vertices"] = out.vertexCount();
   c["faces"] = out.faceCount();
   c["angle_min"] = a.minDegrees;
   c["lt30_pct"] = 100.0 * a.shareMinBelow30;
-  c["hausdorff2_pct"] = 100.0 * std::max(there.max, back.max) / bm.diagonal;
-  c["rms2_pct"] = 100.0 * std::sqrt(0.5 * (there.rms * there.rms + back.rms * back.rms)) / bm.diagonal;
+  c["hausdorff2_pct"] = 100.0 * both.max / bm.diagonal;
+  c["rms2_pct"] = 100.0 * both.rms / bm.diagonal;
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -307,41 +295,13 @@ void BM_Adaptive(benchmark::State& state, const Case& c) {
 
 SurfaceMesh* cgalMesh(benchmark::State& state, BenchMesh& bm) {
   if (bm.cgal) return bm.cgal.get();
-  auto m = std::make_unique<SurfaceMesh>();
-  for (const gr::Vec3& p : bm.tri.positions) m->add_vertex(Kernel::Point_3(p.x(), p.y(), p.z()));
-  for (int f = 0; f < bm.tri.faceCount(); ++f) {
-    const gr::Tri& t = bm.tri.triangles[f];
-    if (m->add_face(SmVertex(t[0]), SmVertex(t[1]), SmVertex(t[2])) == SurfaceMesh::null_face()) {
-      state.SkipWithError(("CGAL Surface_mesh rejects face " + std::to_string(f)).c_str());
-      return nullptr;
-    }
+  gr::Expected<std::unique_ptr<SurfaceMesh>> m = gr::bench::toSurfaceMesh(bm.tri);
+  if (!m) {
+    state.SkipWithError(m.status().message.c_str());
+    return nullptr;
   }
-  bm.cgal = std::move(m);
+  bm.cgal = std::move(*m);
   return bm.cgal.get();
-}
-
-void remeshCgal(SurfaceMesh& m, double edgeLength) {
-  PMP::isotropic_remeshing(faces(m), edgeLength, m,
-                           CGAL::parameters::number_of_iterations(kCgalIterations).protect_constraints(false));
-}
-
-gr::Expected<gr::TriMesh> toTriMesh(SurfaceMesh& m) {
-  m.collect_garbage();
-  std::vector<gr::Vec3> positions;
-  positions.reserve(m.number_of_vertices());
-  for (SmVertex v : m.vertices()) {
-    const Kernel::Point_3& p = m.point(v);
-    positions.emplace_back(p.x(), p.y(), p.z());
-  }
-  std::vector<gr::Tri> triangles;
-  triangles.reserve(m.number_of_faces());
-  for (auto f : m.faces()) {
-    gr::Tri t{};
-    int k = 0;
-    for (SmVertex v : CGAL::vertices_around_face(m.halfedge(f), m)) t[k++ % 3] = static_cast<int>(v.idx());
-    triangles.push_back(t);
-  }
-  return gr::buildTriMesh(std::move(positions), std::move(triangles));
 }
 
 /// The adaptive filter with its default curvature radius (CurvatureRadius 0 = one mean edge
@@ -376,30 +336,23 @@ void BM_Cgal(benchmark::State& state, const Case& c) {
   const std::optional<int> count = uniformCount(state, c, *bm);
   if (!count) return;
   const double n = *count;
-  static std::map<std::string, std::pair<double, int>> calibrated;  // length, runs
-  auto& [length, runs] = calibrated[c.key()];
-  if (runs == 0) {
-    length = std::sqrt(2.0 * PMP::area(*input) / (std::sqrt(3.0) * n));
-    while (runs < kCgalCalibrationRuns) {
-      SurfaceMesh m = *input;
-      remeshCgal(m, length);
-      ++runs;
-      const double obtained = m.number_of_vertices();
-      if (std::abs(obtained / n - 1.0) <= kCountTolerance) break;
-      length *= std::sqrt(obtained / n);
-    }
-  }
+  static std::map<std::string, gr::bench::CgalCalibration> calibrated;
+  gr::bench::CgalCalibration& calibration = calibrated[c.key()];
+  if (calibration.runs == 0)
+    calibration = gr::bench::calibrateCgalEdgeLength(*input, n, kCgalIterations, kCgalCalibrationRuns, kCountTolerance);
+  const double length = calibration.edgeLength;
+  const int runs = calibration.runs;
   std::optional<SurfaceMesh> out;
   for (auto _ : state) {
     state.PauseTiming();
     SurfaceMesh m = *input;
     state.ResumeTiming();
-    remeshCgal(m, length);
+    gr::bench::cgalIsotropicRemeshing(m, length, kCgalIterations);
     state.PauseTiming();
     out = std::move(m);
     state.ResumeTiming();
   }
-  gr::Expected<gr::TriMesh> tri = toTriMesh(*out);
+  gr::Expected<gr::TriMesh> tri = gr::bench::toTriMesh(*out);
   if (!tri) {
     state.SkipWithError(("CGAL output: " + tri.status().message).c_str());
     return;

@@ -22,8 +22,6 @@
 
 #include <benchmark/benchmark.h>
 
-#include <time.h>
-
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -33,38 +31,23 @@
 #include <utility>
 #include <vector>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/remesh.h>
-#include <CGAL/Surface_mesh.h>
-
+#include "bench/bench_support.h"
 #include "core/evaluation.h"
 #include "core/farthest_point_sampling.h"
 #include "core/fast_marching.h"
 #include "core/geodesic_delaunay.h"
 #include "core/metric.h"
 #include "core/tri_mesh.h"
-#include "core/subdivide.h"
-#include "core/vcg_mesh.h"
 
 namespace {
 
-namespace PMP = CGAL::Polygon_mesh_processing;
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
-using SmVertex = SurfaceMesh::Vertex_index;
+using gr::bench::SurfaceMesh;
+using gr::bench::threadSeconds;
 
 constexpr int kCgalIterations = 3;   ///< isotropic_remeshing's number_of_iterations
 constexpr int kCalibrationRuns = 3;  ///< untimed CGAL runs to match the vertex count
 constexpr int kCalibrationRunsLarge = 1;  ///< the same on the 1.66M mesh (one CGAL run takes ~40 s)
 constexpr double kCalibrationTolerance = 0.01;
-
-/// CPU time of the calling thread, in seconds (the machine may be shared).
-double threadSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 // ------------------------------------------------------------------------------------------------
 // Meshes
@@ -106,11 +89,7 @@ BenchMesh* getMesh(benchmark::State& state, const MeshSpec& spec) {
   static std::map<std::string, std::unique_ptr<BenchMesh>> cache;
   auto& slot = cache[spec.name];
   if (slot) return slot.get();
-  gr::Expected<gr::TriMesh> m = gr::loadTriMesh(std::string(GR_MESH_DIR) + "/" + spec.file);
-  if (m && spec.subdivisions > 0) {  // gr::subdivideMidpoint: 1-to-4, old vertices keep their indices
-    gr::Expected<gr::Subdivision> fine = gr::subdivideMidpoint(*m, spec.subdivisions);
-    m = fine ? gr::Expected<gr::TriMesh>(std::move(fine->mesh)) : gr::Expected<gr::TriMesh>(fine.status());
-  }
+  gr::Expected<gr::TriMesh> m = gr::bench::loadBenchMesh(spec.file, spec.subdivisions);
   if (!m) {
     state.SkipWithError(("mesh " + std::string(spec.name) + ": " + m.status().message).c_str());
     return nullptr;
@@ -124,16 +103,12 @@ BenchMesh* getMesh(benchmark::State& state, const MeshSpec& spec) {
 
 SurfaceMesh* cgalMesh(benchmark::State& state, BenchMesh& bm) {
   if (bm.cgal) return bm.cgal.get();
-  auto m = std::make_unique<SurfaceMesh>();
-  for (const gr::Vec3& p : bm.tri.positions) m->add_vertex(Kernel::Point_3(p.x(), p.y(), p.z()));
-  for (int f = 0; f < bm.tri.faceCount(); ++f) {
-    const gr::Tri& t = bm.tri.triangles[f];
-    if (m->add_face(SmVertex(t[0]), SmVertex(t[1]), SmVertex(t[2])) == SurfaceMesh::null_face()) {
-      state.SkipWithError(("CGAL Surface_mesh rejects face " + std::to_string(f)).c_str());
-      return nullptr;
-    }
+  gr::Expected<std::unique_ptr<SurfaceMesh>> m = gr::bench::toSurfaceMesh(bm.tri);
+  if (!m) {
+    state.SkipWithError(m.status().message.c_str());
+    return nullptr;
   }
-  bm.cgal = std::move(m);
+  bm.cgal = std::move(*m);
   return bm.cgal.get();
 }
 
@@ -198,10 +173,10 @@ void setQualityCounters(benchmark::State& state, const BenchMesh& bm, const gr::
   c["in_angle_min"] = bm.angles.minDegrees;
   c["in_lt30_pct"] = 100.0 * bm.angles.shareMinBelow30;
   // One-sided (output to input), and two-sided with the RMS over both directions' samples.
-  const gr::SurfaceDistance there = gr::surfaceDistance(out, bm.tri), back = gr::surfaceDistance(bm.tri, out);
-  c["hausdorff_pct"] = 100.0 * there.max / bm.diagonal;
-  c["hausdorff2_pct"] = 100.0 * std::max(there.max, back.max) / bm.diagonal;
-  c["rms2_pct"] = 100.0 * std::sqrt(0.5 * (there.rms * there.rms + back.rms * back.rms)) / bm.diagonal;
+  const gr::bench::TwoSidedDistance both = gr::bench::twoSidedDistance(out, bm.tri);
+  c["hausdorff_pct"] = 100.0 * gr::surfaceDistance(out, bm.tri).max / bm.diagonal;
+  c["hausdorff2_pct"] = 100.0 * both.max / bm.diagonal;
+  c["rms2_pct"] = 100.0 * both.rms / bm.diagonal;
 }
 
 void runOursCase(benchmark::State& state, const Case& c, bool subVertex) {
@@ -234,30 +209,6 @@ void BM_OursSubVertex(benchmark::State& state, const Case& c) { runOursCase(stat
 // ------------------------------------------------------------------------------------------------
 // CGAL isotropic remeshing
 
-void remeshCgal(SurfaceMesh& m, double edgeLength) {
-  PMP::isotropic_remeshing(faces(m), edgeLength, m,
-                           CGAL::parameters::number_of_iterations(kCgalIterations).protect_constraints(false));
-}
-
-gr::Expected<gr::TriMesh> toTriMesh(SurfaceMesh& m) {
-  m.collect_garbage();
-  std::vector<gr::Vec3> positions;
-  positions.reserve(m.number_of_vertices());
-  for (SmVertex v : m.vertices()) {
-    const Kernel::Point_3& p = m.point(v);
-    positions.emplace_back(p.x(), p.y(), p.z());
-  }
-  std::vector<gr::Tri> triangles;
-  triangles.reserve(m.number_of_faces());
-  for (auto f : m.faces()) {
-    gr::Tri t{};
-    int k = 0;
-    for (SmVertex v : CGAL::vertices_around_face(m.halfedge(f), m)) t[k++ % 3] = static_cast<int>(v.idx());
-    triangles.push_back(t);
-  }
-  return gr::buildTriMesh(std::move(positions), std::move(triangles));
-}
-
 void BM_Cgal(benchmark::State& state, const Case& c) {
   BenchMesh* bm = getMesh(state, c.mesh);
   if (!bm) return;
@@ -272,31 +223,25 @@ void BM_Cgal(benchmark::State& state, const Case& c) {
   }
   const double n = found->second;
   // Calibrated once per case (the repetitions reuse it).
-  static std::map<std::string, std::pair<double, int>> calibrated;  // length, runs
-  auto& [length, calibrationRuns] = calibrated[c.key()];
-  if (calibrationRuns == 0) {
-    length = std::sqrt(2.0 * PMP::area(*input) / (std::sqrt(3.0) * n));
-    const int maxRuns = c.mesh.subdivisions > 0 ? kCalibrationRunsLarge : kCalibrationRuns;
-    while (calibrationRuns < maxRuns) {
-      SurfaceMesh m = *input;
-      remeshCgal(m, length);
-      ++calibrationRuns;
-      const double obtained = m.number_of_vertices();
-      if (std::abs(obtained / n - 1.0) <= kCalibrationTolerance) break;
-      length *= std::sqrt(obtained / n);
-    }
-  }
+  static std::map<std::string, gr::bench::CgalCalibration> calibrated;
+  gr::bench::CgalCalibration& calibration = calibrated[c.key()];
+  if (calibration.runs == 0)
+    calibration = gr::bench::calibrateCgalEdgeLength(*input, n, kCgalIterations,
+                                                     c.mesh.subdivisions > 0 ? kCalibrationRunsLarge : kCalibrationRuns,
+                                                     kCalibrationTolerance);
+  const double length = calibration.edgeLength;
+  const int calibrationRuns = calibration.runs;
   std::optional<SurfaceMesh> out;
   for (auto _ : state) {
     state.PauseTiming();
     SurfaceMesh m = *input;
     state.ResumeTiming();
-    remeshCgal(m, length);
+    gr::bench::cgalIsotropicRemeshing(m, length, kCgalIterations);
     state.PauseTiming();
     out = std::move(m);  // freeing the output is not timed either
     state.ResumeTiming();
   }
-  gr::Expected<gr::TriMesh> tri = toTriMesh(*out);
+  gr::Expected<gr::TriMesh> tri = gr::bench::toTriMesh(*out);
   if (!tri) {
     state.SkipWithError(("CGAL output: " + tri.status().message).c_str());
     return;

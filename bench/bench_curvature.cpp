@@ -37,8 +37,8 @@
 #include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
+#include "bench/bench_support.h"
 #include "core/curvature.h"
-#include "core/subdivide.h"
 #include "core/tri_mesh.h"
 #include "core/vcg_mesh.h"
 
@@ -80,11 +80,7 @@ BenchMesh* getMesh(benchmark::State& state, const MeshSpec& spec) {
   static std::map<std::string, std::unique_ptr<BenchMesh>> cache;
   auto& slot = cache[spec.name];
   if (slot) return slot.get();
-  gr::Expected<gr::TriMesh> m = gr::loadTriMesh(std::string(GR_MESH_DIR) + "/" + spec.file);
-  if (m && spec.subdivisions > 0) {
-    gr::Expected<gr::Subdivision> fine = gr::subdivideMidpoint(*m, spec.subdivisions);
-    m = fine ? gr::Expected<gr::TriMesh>(std::move(fine->mesh)) : gr::Expected<gr::TriMesh>(fine.status());
-  }
+  gr::Expected<gr::TriMesh> m = gr::bench::loadBenchMesh(spec.file, spec.subdivisions);
   if (!m) {
     state.SkipWithError(("mesh " + std::string(spec.name) + ": " + m.status().message).c_str());
     return nullptr;

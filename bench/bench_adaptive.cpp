@@ -220,17 +220,17 @@ void setStageCounters(benchmark::State& state, const Stages& sum) {
   state.counters["delaunay_ms"] = perRun(sum.delaunay);
 }
 
-void BM_Uniform(benchmark::State& state, const Case& c) {
-  BenchMesh* bm = getMesh(state, c);
-  if (!bm) return;
-  const int target = targetCount(c, *bm);
+/// The timed loop every family of ours shares: runs `remeshOnce` per iteration, sums its stages,
+/// and sets the stage, target and quality counters from the last run (nullopt after an error).
+template <class RemeshOnce>
+std::optional<Run> timeRuns(benchmark::State& state, const BenchMesh& bm, int target, RemeshOnce remeshOnce) {
   Stages sum;
   std::optional<Run> last;
   for (auto _ : state) {
-    gr::Expected<Run> run = remesh(bm->tri, gr::Metric::uniform(), target);
+    gr::Expected<Run> run = remeshOnce();
     if (!run) {
       state.SkipWithError(run.status().message.c_str());
-      return;
+      return std::nullopt;
     }
     sum += run->seconds;
     last = std::move(*run);
@@ -238,8 +238,17 @@ void BM_Uniform(benchmark::State& state, const Case& c) {
   setStageCounters(state, sum);
   state.counters["target"] = target;
   state.counters["added"] = last->result.addedSamples;
-  setQualityCounters(state, *bm, last->result.mesh);
-  uniformCounts()[c.key()] = last->result.mesh.vertexCount();
+  setQualityCounters(state, bm, last->result.mesh);
+  return last;
+}
+
+void BM_Uniform(benchmark::State& state, const Case& c) {
+  BenchMesh* bm = getMesh(state, c);
+  if (!bm) return;
+  const int target = targetCount(c, *bm);
+  const std::optional<Run> last =
+      timeRuns(state, *bm, target, [&] { return remesh(bm->tri, gr::Metric::uniform(), target); });
+  if (last) uniformCounts()[c.key()] = last->result.mesh.vertexCount();
 }
 
 void BM_Adaptive(benchmark::State& state, const Case& c) {
@@ -271,38 +280,13 @@ void BM_Adaptive(benchmark::State& state, const Case& c) {
     }
     target = best;
   }
-  Stages sum;
-  std::optional<Run> last;
-  for (auto _ : state) {
-    gr::Expected<Run> run = remeshAdaptive(bm->tri, target);
-    if (!run) {
-      state.SkipWithError(run.status().message.c_str());
-      return;
-    }
-    sum += run->seconds;
-    last = std::move(*run);
-  }
-  setStageCounters(state, sum);
-  state.counters["target"] = target;
+  if (!timeRuns(state, *bm, target, [&] { return remeshAdaptive(bm->tri, target); })) return;
   state.counters["calibration_runs"] = runs;
   state.counters["uniform_vertices"] = *n;
-  state.counters["added"] = last->result.addedSamples;
-  setQualityCounters(state, *bm, last->result.mesh);
 }
 
 // ------------------------------------------------------------------------------------------------
 // CGAL isotropic remeshing (as bench_remesh)
-
-SurfaceMesh* cgalMesh(benchmark::State& state, BenchMesh& bm) {
-  if (bm.cgal) return bm.cgal.get();
-  gr::Expected<std::unique_ptr<SurfaceMesh>> m = gr::bench::toSurfaceMesh(bm.tri);
-  if (!m) {
-    state.SkipWithError(m.status().message.c_str());
-    return nullptr;
-  }
-  bm.cgal = std::move(*m);
-  return bm.cgal.get();
-}
 
 /// The adaptive filter with its default curvature radius (CurvatureRadius 0 = one mean edge
 /// length) and the same strength, at the uniform run's target (no calibration): the time the
@@ -311,27 +295,13 @@ void BM_AdaptiveDefaultRadius(benchmark::State& state, const Case& c) {
   BenchMesh* bm = getMesh(state, c);
   if (!bm) return;
   const int target = targetCount(c, *bm);
-  Stages sum;
-  std::optional<Run> last;
-  for (auto _ : state) {
-    gr::Expected<Run> run = remeshAdaptive(bm->tri, target, nullptr, 1.0);
-    if (!run) {
-      state.SkipWithError(run.status().message.c_str());
-      return;
-    }
-    sum += run->seconds;
-    last = std::move(*run);
-  }
-  setStageCounters(state, sum);
-  state.counters["target"] = target;
-  state.counters["added"] = last->result.addedSamples;
-  setQualityCounters(state, *bm, last->result.mesh);
+  timeRuns(state, *bm, target, [&] { return remeshAdaptive(bm->tri, target, nullptr, 1.0); });
 }
 
 void BM_Cgal(benchmark::State& state, const Case& c) {
   BenchMesh* bm = getMesh(state, c);
   if (!bm) return;
-  SurfaceMesh* input = cgalMesh(state, *bm);
+  SurfaceMesh* input = gr::bench::cachedSurfaceMesh(state, bm->tri, bm->cgal);
   if (!input) return;
   const std::optional<int> count = uniformCount(state, c, *bm);
   if (!count) return;

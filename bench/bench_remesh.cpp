@@ -101,17 +101,6 @@ BenchMesh* getMesh(benchmark::State& state, const MeshSpec& spec) {
   return slot.get();
 }
 
-SurfaceMesh* cgalMesh(benchmark::State& state, BenchMesh& bm) {
-  if (bm.cgal) return bm.cgal.get();
-  gr::Expected<std::unique_ptr<SurfaceMesh>> m = gr::bench::toSurfaceMesh(bm.tri);
-  if (!m) {
-    state.SkipWithError(m.status().message.c_str());
-    return nullptr;
-  }
-  bm.cgal = std::move(*m);
-  return bm.cgal.get();
-}
-
 int targetCount(const Case& c, const BenchMesh& bm) {
   return c.count > 0 ? c.count : static_cast<int>(std::lround(c.fraction * bm.tri.vertexCount()));
 }
@@ -212,7 +201,7 @@ void BM_OursSubVertex(benchmark::State& state, const Case& c) { runOursCase(stat
 void BM_Cgal(benchmark::State& state, const Case& c) {
   BenchMesh* bm = getMesh(state, c.mesh);
   if (!bm) return;
-  SurfaceMesh* input = cgalMesh(state, *bm);
+  SurfaceMesh* input = gr::bench::cachedSurfaceMesh(state, bm->tri, bm->cgal);
   if (!input) return;
   // The vertex count to match: ours, run untimed if its benchmark was filtered out.
   auto found = oursVertexCount().find(c.key());

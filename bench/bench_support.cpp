@@ -41,6 +41,17 @@ Expected<std::unique_ptr<SurfaceMesh>> toSurfaceMesh(const TriMesh& mesh) {
   return m;
 }
 
+SurfaceMesh* cachedSurfaceMesh(benchmark::State& state, const TriMesh& mesh, std::unique_ptr<SurfaceMesh>& slot) {
+  if (slot) return slot.get();
+  Expected<std::unique_ptr<SurfaceMesh>> m = toSurfaceMesh(mesh);
+  if (!m) {
+    state.SkipWithError(m.status().message.c_str());
+    return nullptr;
+  }
+  slot = std::move(*m);
+  return slot.get();
+}
+
 Expected<TriMesh> toTriMesh(SurfaceMesh& m) {
   m.collect_garbage();
   std::vector<Vec3> positions;

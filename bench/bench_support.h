@@ -6,6 +6,8 @@
 #include <memory>
 #include <string>
 
+#include <benchmark/benchmark.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -26,6 +28,9 @@ Expected<TriMesh> loadBenchMesh(const std::string& file, int subdivisions = 0);
 
 /// A CGAL copy of a mesh (fails, naming the face, when Surface_mesh rejects one).
 Expected<std::unique_ptr<SurfaceMesh>> toSurfaceMesh(const TriMesh& mesh);
+/// `slot`, filled with toSurfaceMesh(mesh) on first use (never timed); nullptr after marking the
+/// benchmark skipped when CGAL rejects the mesh.
+SurfaceMesh* cachedSurfaceMesh(benchmark::State& state, const TriMesh& mesh, std::unique_ptr<SurfaceMesh>& slot);
 /// Back to a TriMesh (garbage collected first).
 Expected<TriMesh> toTriMesh(SurfaceMesh& mesh);
 

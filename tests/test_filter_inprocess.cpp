@@ -64,15 +64,6 @@ struct Snapshot {
   }
 };
 
-/// The number just before `words` in the log (e.g. "6 added to make"), or -1000 if absent.
-int numberBeforeInLog(const std::string& log, const std::string& words) {
-  const size_t at = log.find(words);
-  if (at == std::string::npos || at < 2) return -1000;
-  size_t start = log.rfind(' ', at - 2);
-  start = start == std::string::npos ? 0 : start + 1;
-  return std::atoi(log.substr(start, at - start).c_str());
-}
-
 class FilterInProcess : public ::testing::Test {
  protected:
   FilterGeodesicRemeshPlugin plugin;
@@ -486,7 +477,7 @@ TEST_F(FilterInProcess, AdaptiveRemeshOnAConstantFieldFallsBackToUniform) {
   EXPECT_NE(logText().find("the field is constant"), std::string::npos) << logText();
   EXPECT_NE(logText().find("uniform speed"), std::string::npos) << logText();
   EXPECT_EQ(doc.meshList.size(), 2);
-  EXPECT_EQ(doc.mm()->cm.vn, 300 + numberBeforeInLog(logText(), "added to make"));
+  EXPECT_EQ(doc.mm()->cm.vn, 300 + test::numberBefore(logText(), "added to make"));
 }
 
 // Any filter's quality drives it: a quality field (here Direct on q = x) is read and logged.

@@ -190,15 +190,6 @@ TEST(Meshlabserver, UniformRemeshKeepsTheBoundaryLoopsOfTheShark) {
 
 // --- The acceptance runs, one resources/acceptance/*.mlx each -----------------------
 
-/// The number before `word` in the log line that contains `line` (e.g. "6 added to make").
-int numberBefore(const std::string& log, const std::string& word) {
-  const size_t at = log.find(word);
-  if (at == std::string::npos) return -1;
-  size_t start = log.rfind(' ', at - 2);
-  start = start == std::string::npos ? 0 : start + 1;
-  return std::atoi(log.substr(start, at - start).c_str());
-}
-
 class UniformAcceptance : public ::testing::TestWithParam<std::tuple<std::string, int>> {};
 
 // Output through the real meshlabserver: manifold, oriented, the input's components, genus and
@@ -222,7 +213,7 @@ TEST_P(UniformAcceptance, TopologyKeptThroughMeshlabserver) {
   EXPECT_EQ(b.genus, a.genus);
   EXPECT_EQ(b.boundaryLoops, a.boundaryLoops);
   const int target = input->vertexCount() * pct / 100;
-  const int added = numberBefore(run.output, "added to make the triangulation valid");
+  const int added = test::numberBefore(run.output, "added to make the triangulation valid");
   ASSERT_GE(added, 0) << run.output;
   EXPECT_EQ(result->vertexCount(), target + added) << run.output;
   const AngleStatistics q = angleStatistics(*result);
@@ -258,7 +249,7 @@ TEST(Meshlabserver, AdaptiveCurvatureRemeshOfFandisk) {
   EXPECT_EQ(result->topology.components, 1);
   EXPECT_EQ(result->topology.genus, 0);
   EXPECT_EQ(result->topology.boundaryEdges, 0);
-  EXPECT_EQ(result->vertexCount(), 647 + numberBefore(run.output, "added to make the triangulation valid"));
+  EXPECT_EQ(result->vertexCount(), 647 + test::numberBefore(run.output, "added to make the triangulation valid"));
 }
 
 // Any filter that writes quality drives the adaptive remeshing: curvature into quality, then

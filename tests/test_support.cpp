@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <numeric>
 #include <set>
@@ -210,6 +211,18 @@ Recount recount(const std::vector<Tri>& tris, int nv) {
   r.components = static_cast<int>(chi.size());
   for (const auto& [root, c] : chi) r.genusSum += static_cast<int>((2 - c - loopsOfComponent[root]) / 2);
   return r;
+}
+
+}  // namespace gr::test
+
+namespace gr::test {
+
+int numberBefore(const std::string& log, const std::string& words) {
+  const size_t at = log.find(words);
+  if (at == std::string::npos || at < 2) return -1000;
+  size_t start = log.rfind(' ', at - 2);
+  start = start == std::string::npos ? 0 : start + 1;
+  return std::atoi(log.substr(start, at - start).c_str());
 }
 
 }  // namespace gr::test

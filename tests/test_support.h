@@ -47,3 +47,11 @@ struct Recount {
 Recount recount(const std::vector<Tri>& tris, int vertexCount);
 
 }  // namespace gr::test
+
+namespace gr::test {
+
+/// The integer just before `words` in a log ("6 added to make" -> 6), or -1000 if `words` is
+/// not there.
+int numberBefore(const std::string& log, const std::string& words);
+
+}  // namespace gr::test

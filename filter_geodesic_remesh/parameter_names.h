@@ -18,6 +18,7 @@ constexpr const char* kSpacing = "Spacing";
 constexpr const char* kSeed = "Seed";
 constexpr const char* kLabelInput = "LabelInput";
 constexpr const char* kRefinement = "Refinement";
+constexpr const char* kRelaxation = "Relaxation";
 constexpr const char* kSubVertexPlacement = "SubVertexPlacement";
 
 }  // namespace gr::filters::param

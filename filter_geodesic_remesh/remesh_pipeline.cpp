@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/evaluation.h"
-#include "core/geodesic_delaunay.h"
+#include "core/remesh.h"
 #include "core/subdivide.h"
 #include "filter_geodesic_remesh/parameter_names.h"
 #include "vcg_adapters/cmesho_adapter.h"
@@ -77,6 +77,8 @@ Status remeshToNewLayer(MeshDocument& doc, const CurrentMesh& current, const Rem
                        " non-manifold vertices; repair them first (Cleaning and Repairing menu)");
   const int refinement = request.refinement;
   if (refinement < 0 || refinement > 3) return invalidInput("Refinement must be 0 to 3, got " + std::to_string(refinement));
+  if (request.relaxation < 0 || request.relaxation > 100)
+    return invalidInput("Relaxation must be 0 to 100 rounds, got " + std::to_string(request.relaxation));
 
   // The mesh the fronts run on: the input, or its midpoint subdivision (same surface).
   Expected<Subdivision> fine = subdivideMidpoint(mesh, refinement);
@@ -84,12 +86,16 @@ Status remeshToNewLayer(MeshDocument& doc, const CurrentMesh& current, const Rem
   // One engine for both stages: the triangulation starts from the sampling's Voronoi diagram.
   const Metric metric = metricOnSubdivision(request.metric, mesh, *fine);
   FastMarcher marcher(fine->mesh, metric);
-  Expected<FpsResult> samples = farthestPointSampling(marcher, request.sampling, ctx.progress.sub(0.0, 0.6));
-  if (!samples) return samples.status();
-  Expected<DelaunayResult> result = geodesicDelaunay(marcher, samples->points, {}, ctx.progress.sub(0.6, 0.9));
-  if (!result) return result.status();
-  const AngleStatistics angles = angleStatistics(result->mesh);
-  const SurfaceDistance there = surfaceDistance(result->mesh, mesh), back = surfaceDistance(mesh, result->mesh);
+  RemeshParams params;
+  params.sampling = request.sampling;
+  params.relaxation.iterations = request.relaxation;
+  Expected<RemeshResult> remeshed = remesh(marcher, params, ctx.progress.sub(0.0, 0.9));
+  if (!remeshed) return remeshed.status();
+  const FpsResult& samples = remeshed->sampling;
+  const DelaunayResult& result = remeshed->mesh;
+  const RelaxationResult& relaxed = remeshed->relaxation;
+  const AngleStatistics angles = angleStatistics(result.mesh);
+  const SurfaceDistance there = surfaceDistance(result.mesh, mesh), back = surfaceDistance(mesh, result.mesh);
   const double diag = mesh.boundingBoxDiagonal();
 
   // ...then commit: a new layer, and the input's labels only if asked.
@@ -99,13 +105,13 @@ Status remeshToNewLayer(MeshDocument& doc, const CurrentMesh& current, const Rem
   MeshModel* out = doc.addNewMesh("", label, true);
   if (copyColor) out->updateDataMask(MeshModel::MM_VERTCOLOR);
   if (copyQuality) out->updateDataMask(MeshModel::MM_VERTQUALITY);
-  std::vector<SurfacePoint> origin(result->samplePoint.size());
-  for (size_t i = 0; i < origin.size(); ++i) origin[i] = fine->toOriginal(mesh, result->samplePoint[i]);
-  adapters::writeMesh(result->mesh, out->cm, m, view, origin, copyColor, copyQuality);
+  std::vector<SurfacePoint> origin(result.samplePoint.size());
+  for (size_t i = 0; i < origin.size(); ++i) origin[i] = fine->toOriginal(mesh, result.samplePoint[i]);
+  adapters::writeMesh(result.mesh, out->cm, m, view, origin, copyColor, copyQuality);
   if (request.labelInput) {  // the input's vertices keep their indices in the subdivision
-    const std::vector<int> region(result->region.begin(), result->region.begin() + mesh.vertexCount());
+    const std::vector<int> region(result.region.begin(), result.region.begin() + mesh.vertexCount());
     adapters::writeVertexQuality(m, view, std::vector<double>(region.begin(), region.end()), -1.0);
-    adapters::colorByLabel(m, view, region, result->mesh.vertexCount());
+    adapters::colorByLabel(m, view, region, result.mesh.vertexCount());
     mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
   }
 
@@ -116,19 +122,23 @@ Status remeshToNewLayer(MeshDocument& doc, const CurrentMesh& current, const Rem
           (refinement > 0 ? " (fronts on " + std::to_string(fine->mesh.vertexCount()) + " vertices, " +
                                 std::to_string(refinement) + " subdivisions)"
                           : std::string()) +
-          ": " + std::to_string(result->mesh.vertexCount()) + " vertices, " +
-          std::to_string(result->mesh.faceCount()) + " faces on the new layer '" + label.toStdString() + "'");
-  ctx.log("Samples: " + std::to_string(samples->samples.size()) + " by farthest-point sampling, " +
-          std::to_string(result->addedSamples) + " added to make the triangulation valid (" +
-          std::to_string(result->repairRounds) + " rounds)" +
-          (result->droppedSamples > 0 ? ", " + std::to_string(result->droppedSamples) + " left out (nearest to no vertex)"
+          ": " + std::to_string(result.mesh.vertexCount()) + " vertices, " +
+          std::to_string(result.mesh.faceCount()) + " faces on the new layer '" + label.toStdString() + "'");
+  ctx.log("Samples: " + std::to_string(samples.samples.size()) + " by farthest-point sampling, " +
+          std::to_string(result.addedSamples) + " added to make the triangulation valid (" +
+          std::to_string(result.repairRounds) + " rounds)" +
+          (result.droppedSamples > 0 ? ", " + std::to_string(result.droppedSamples) + " left out (nearest to no vertex)"
                                       : std::string()) +
-          "; covering radius " + formatNumber(samples->coveringRadius, "%.4g") +
+          "; covering radius " + formatNumber(samples.coveringRadius, "%.4g") +
           (request.metric.isUniform() ? std::string() : " (a travel time: distance over speed)") +
-          (result->flippedEdges > 0 ? "; " + std::to_string(result->flippedEdges) + " edges flipped to Delaunay"
+          (result.flippedEdges > 0 ? "; " + std::to_string(result.flippedEdges) + " edges flipped to Delaunay"
                                     : std::string()));
-  ctx.log("Topology kept: " + std::to_string(result->mesh.topology.components) + " components, genus " +
-          std::to_string(result->mesh.topology.genus) + ", " + std::to_string(result->mesh.topology.boundaryLoops) +
+  if (relaxed.iterations > 0)
+    ctx.log("Relaxation on the input surface: " + std::to_string(relaxed.iterations) + " rounds, " +
+            std::to_string(relaxed.moves) + " vertex moves, " + std::to_string(relaxed.flips) + " flips; " +
+            std::to_string(relaxed.fixedVertices) + " vertices kept in place (boundary, creases and corners)");
+  ctx.log("Topology kept: " + std::to_string(result.mesh.topology.components) + " components, genus " +
+          std::to_string(result.mesh.topology.genus) + ", " + std::to_string(result.mesh.topology.boundaryLoops) +
           " boundary loops");
   ctx.log("Angles: standard deviation " + formatNumber(angles.stdDegrees, "%.1f") + " deg, smallest " +
           formatNumber(angles.minDegrees, "%.1f") + " deg, " + formatNumber(100 * angles.shareMinBelow30, "%.2f") +

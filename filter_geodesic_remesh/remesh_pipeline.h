@@ -1,5 +1,6 @@
 // The remeshing pipeline both remeshing filters share (paper §3.1-3.4): farthest-point samples
-// under a metric, their geodesic Delaunay triangulation, a new layer, and the log.
+// under a metric, their geodesic Delaunay triangulation, its relaxation (core/remesh.h), a new
+// layer, and the log.
 #pragma once
 
 #include <chrono>
@@ -16,6 +17,7 @@ struct RemeshRequest {
   FpsParams sampling;
   Metric metric;            ///< on the input's core mesh (uniform for the uniform filter)
   int refinement = 0;       ///< midpoint subdivisions the fronts run on (0-3)
+  int relaxation = 0;       ///< rounds of tangential relaxation after the triangulation (0-100)
   bool labelInput = false;  ///< also write each input vertex's cell into its quality and colour
   std::string title;        ///< first words of the log ("Geodesic uniform remeshing")
   std::string layerSuffix;  ///< appended to the input layer's name for the new layer

@@ -12,6 +12,11 @@ void declareUniformRemesh(const MeshModel& mesh, RichParameterList& params) {
                           "(0 to 3; each level: 4x the vertices and about 4x the time). Finer cells give better "
                           "shaped triangles when the target is a large share of the input's vertices; samples "
                           "then also lie between input vertices (default 0)."));
+  params.addParam(RichInt(param::kRelaxation, 3, "Relaxation",
+                          "Rounds of tangential relaxation after the triangulation: each vertex moves toward the "
+                          "mean of its neighbours on the input surface (never across a crease, never smoothing "
+                          "away a tip), then edges are flipped back to Delaunay. Raises the smallest angles; "
+                          "0 keeps the paper's triangulation as it is (default 3)."));
   params.addParam(RichBool(param::kLabelInput, false, "Label input",
                            "Also write into the input mesh each vertex's Voronoi cell (the output vertex it belongs "
                            "to) as vertex quality, and color it by cell (default false: the input is not changed)."));
@@ -26,6 +31,7 @@ Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, Fi
   request.sampling = *sampling;
   request.metric = Metric::uniform();
   request.refinement = params.getInt(param::kRefinement);
+  request.relaxation = params.getInt(param::kRelaxation);
   request.labelInput = params.getBool(param::kLabelInput);
   request.title = "Geodesic uniform remeshing";
   request.layerSuffix = " - geodesic remesh";

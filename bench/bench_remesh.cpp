@@ -1,9 +1,13 @@
 // Uniform remeshing: ours (farthest-point sampling + geodesic Delaunay, paper §3) against CGAL's
 // isotropic remeshing, same process, same meshes, same output vertex count.
 //
-//   Ours/<mesh>/<target>  FastMarcher construction + farthestPointSampling + geodesicDelaunay on
-//                         one engine, as filter_geodesic_remesh/uniform_remesh_filter.cpp runs them.
-//                         Counters engine_ms, sampling_ms, delaunay_ms: each stage's thread CPU time.
+//   Ours/<mesh>/<target>  FastMarcher construction + farthestPointSampling + geodesicDelaunay +
+//                         relaxOnSurface (3 rounds) on one engine: the stages of gr::remesh
+//                         (core/remesh.h), as the uniform filter runs them at its defaults.
+//                         Counters engine_ms, sampling_ms, delaunay_ms, relax_ms: each stage's
+//                         thread CPU time.
+//   OursNoRelax/...       the same without the relaxation (the paper's triangulation alone).
+//   OursSubVertex/...     the same as Ours with FpsParams::subVertexPlacement.
 //   Cgal/<mesh>/<target>  CGAL::Polygon_mesh_processing::isotropic_remeshing on a Surface_mesh<Epick>
 //                         copy (copy untimed), 3 iterations, protect_constraints(false). Target edge
 //                         length L calibrated untimed so that its vertex count matches ours: start
@@ -36,6 +40,7 @@
 #include "core/farthest_point_sampling.h"
 #include "core/fast_marching.h"
 #include "core/geodesic_delaunay.h"
+#include "core/surface_relaxation.h"
 #include "core/metric.h"
 #include "core/tri_mesh.h"
 
@@ -110,15 +115,20 @@ int targetCount(const Case& c, const BenchMesh& bm) {
 
 struct OursRun {
   gr::DelaunayResult result;
-  double engineSeconds = 0, samplingSeconds = 0, delaunaySeconds = 0;
+  double engineSeconds = 0, samplingSeconds = 0, delaunaySeconds = 0, relaxSeconds = 0;
+};
+
+struct Variant {
+  bool subVertex = false;  ///< FpsParams::subVertexPlacement
+  int relaxation = 3;      ///< RelaxationParams::iterations (the filter's default)
 };
 
 /// The filter's pipeline on a fresh engine; nullopt after SkipWithError.
-std::optional<OursRun> runOurs(benchmark::State& state, const BenchMesh& bm, int target, bool subVertex) {
+std::optional<OursRun> runOurs(benchmark::State& state, const BenchMesh& bm, int target, const Variant& variant) {
   const gr::Metric metric = gr::Metric::uniform();
   gr::FpsParams params;
   params.targetCount = target;
-  params.subVertexPlacement = subVertex;
+  params.subVertexPlacement = variant.subVertex;
   OursRun run;
   const double t0 = threadSeconds();
   gr::FastMarcher marcher(bm.tri, metric);
@@ -135,10 +145,19 @@ std::optional<OursRun> runOurs(benchmark::State& state, const BenchMesh& bm, int
     state.SkipWithError(("triangulation: " + d.status().message).c_str());
     return std::nullopt;
   }
+  gr::RelaxationParams relax;
+  relax.iterations = variant.relaxation;
+  gr::Expected<gr::RelaxationResult> r = gr::relaxOnSurface(d->mesh, d->samplePoint, bm.tri, relax);
+  const double t4 = threadSeconds();
+  if (!r) {
+    state.SkipWithError(("relaxation: " + r.status().message).c_str());
+    return std::nullopt;
+  }
   run.result = std::move(*d);
   run.engineSeconds = t1 - t0;
   run.samplingSeconds = t2 - t1;
   run.delaunaySeconds = t3 - t2;
+  run.relaxSeconds = t4 - t3;
   return run;
 }
 
@@ -168,32 +187,38 @@ void setQualityCounters(benchmark::State& state, const BenchMesh& bm, const gr::
   c["rms2_pct"] = 100.0 * both.rms / bm.diagonal;
 }
 
-void runOursCase(benchmark::State& state, const Case& c, bool subVertex) {
+void runOursCase(benchmark::State& state, const Case& c, const Variant& variant) {
   BenchMesh* bm = getMesh(state, c.mesh);
   if (!bm) return;
   const int target = targetCount(c, *bm);
-  double engine = 0, sampling = 0, delaunay = 0;
+  double engine = 0, sampling = 0, delaunay = 0, relax = 0;
   std::optional<OursRun> run;
   for (auto _ : state) {
-    run = runOurs(state, *bm, target, subVertex);
+    run = runOurs(state, *bm, target, variant);
     if (!run) return;
     engine += run->engineSeconds;
     sampling += run->samplingSeconds;
     delaunay += run->delaunaySeconds;
+    relax += run->relaxSeconds;
   }
   const auto perRun = [](double s) { return benchmark::Counter(1e3 * s, benchmark::Counter::kAvgIterations); };
   state.counters["engine_ms"] = perRun(engine);
   state.counters["sampling_ms"] = perRun(sampling);
   state.counters["delaunay_ms"] = perRun(delaunay);
+  state.counters["relax_ms"] = perRun(relax);
   state.counters["added"] = run->result.addedSamples;
   state.counters["repair_rounds"] = run->result.repairRounds;
   setQualityCounters(state, *bm, run->result.mesh, target);
-  if (!subVertex) oursVertexCount()[c.key()] = run->result.mesh.vertexCount();
 }
 
-void BM_Ours(benchmark::State& state, const Case& c) { runOursCase(state, c, false); }
-/// The same with FpsParams::subVertexPlacement (the filter's SubVertexPlacement option).
-void BM_OursSubVertex(benchmark::State& state, const Case& c) { runOursCase(state, c, true); }
+void BM_Ours(benchmark::State& state, const Case& c) {
+  runOursCase(state, c, Variant{});
+  if (!state.error_occurred()) oursVertexCount()[c.key()] = static_cast<int>(state.counters["vertices"]);
+}
+/// The paper's triangulation alone (the filter's Relaxation = 0).
+void BM_OursNoRelax(benchmark::State& state, const Case& c) { runOursCase(state, c, Variant{false, 0}); }
+/// With FpsParams::subVertexPlacement (the filter's SubVertexPlacement option).
+void BM_OursSubVertex(benchmark::State& state, const Case& c) { runOursCase(state, c, Variant{true, 3}); }
 
 // ------------------------------------------------------------------------------------------------
 // CGAL isotropic remeshing
@@ -206,7 +231,7 @@ void BM_Cgal(benchmark::State& state, const Case& c) {
   // The vertex count to match: ours, run untimed if its benchmark was filtered out.
   auto found = oursVertexCount().find(c.key());
   if (found == oursVertexCount().end()) {
-    std::optional<OursRun> run = runOurs(state, *bm, targetCount(c, *bm), false);
+    std::optional<OursRun> run = runOurs(state, *bm, targetCount(c, *bm), Variant{});
     if (!run) return;
     found = oursVertexCount().emplace(c.key(), run->result.mesh.vertexCount()).first;
   }
@@ -261,6 +286,7 @@ void registerAll() {
   for (const Case& c : kCases) {
     add("Ours", BM_Ours, c);  // before Cgal: it records the vertex count CGAL is calibrated to
     add("Cgal", BM_Cgal, c);
+    add("OursNoRelax", BM_OursNoRelax, c);
     if (c.mesh.subdivisions == 0) add("OursSubVertex", BM_OursSubVertex, c);
   }
 }

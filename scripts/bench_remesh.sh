@@ -41,24 +41,25 @@ def t(x):
 print(f"Run: {ctx.get('date', '?')} on {ctx.get('host_name', '?')}, {ctx.get('num_cpus', '?')} CPUs, "
       f"load average {ctx.get('load_avg', '?')}; CPU time per run, median of the repetitions; "
       "ratio = CGAL time / our time (> 1: ours is faster); ours: time = engine (FastMarcher construction) "
-      "+ sampling + triangulation; quality: std of all angles, smallest angle, "
+      "+ sampling + triangulation + relaxation; quality: std of all angles, smallest angle, "
       "% of triangles with an angle under 30°, Hausdorff distance output → input (one-sided) and both ways "
       "(two-sided), and the RMS distance both ways, in % of the input's bounding-box diagonal; "
-      "ours + sub-vertex: FpsParams::subVertexPlacement (the filter's SubVertexPlacement).")
+      "ours: the filter's defaults (3 rounds of relaxation); ours, no relaxation: the paper's triangulation "
+      "alone (Relaxation = 0); ours + sub-vertex: FpsParams::subVertexPlacement (the filter's SubVertexPlacement).")
 print()
-print("| mesh | target | method | vertices | faces | added | time | engine | sampling | triangulation | CGAL / ours "
+print("| mesh | target | method | vertices | faces | added | time | engine | sampling | triangulation | relaxation | CGAL / ours "
       "| angle std | min angle | % < 30° | Hausdorff % | two-sided % | RMS % |")
-print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
 shown = set()
 for (family, mesh, target), rows in runs.items():
     r = rows[0]
     err = next((x.get("error_message", "error") for x in rows if x.get("error_occurred")), None)
     if mesh not in shown and "vertices_in" in r:
         shown.add(mesh)
-        print(f"| {mesh} | input | — | {int(r['vertices_in']):,} | | | | | | | | {r['in_angle_std']:.1f}° "
+        print(f"| {mesh} | input | — | {int(r['vertices_in']):,} | | | | | | | | | {r['in_angle_std']:.1f}° "
               f"| {r['in_angle_min']:.1f}° | {r['in_lt30_pct']:.2f} | | | |")
     if err:
-        print(f"| {mesh} | {target} | {family} | error: {err} | | | | | | | | | | | | | |")
+        print(f"| {mesh} | {target} | {family} | error: {err} | | | | | | | | | | | | | | |")
         continue
     ours = runs.get(("Ours", mesh, target))
     ratio = ms(rows) / ms(ours) if family == "Cgal" and ours and "vertices" in ours[0] else None
@@ -67,9 +68,11 @@ for (family, mesh, target), rows in runs.items():
     eng = t(med(rows, "engine_ms")) if ours_family else ""
     samp = t(med(rows, "sampling_ms")) if ours_family else ""
     tri = t(med(rows, "delaunay_ms")) if ours_family else ""
-    label = {"Ours": "**ours**", "OursSubVertex": "ours + sub-vertex"}.get(family) or f"CGAL (L = {r['edge_length']:.4g})"
+    rel = t(med(rows, "relax_ms")) if ours_family else ""
+    label = {"Ours": "**ours**", "OursNoRelax": "ours, no relaxation",
+             "OursSubVertex": "ours + sub-vertex"}.get(family) or f"CGAL (L = {r['edge_length']:.4g})"
     print(f"| {mesh} | {target} | {label} | {int(r['vertices']):,} | {int(r['faces']):,} | {added} "
-          f"| {t(ms(rows))} | {eng} | {samp} | {tri} | {'' if ratio is None else f'{ratio:.2f}×'} "
+          f"| {t(ms(rows))} | {eng} | {samp} | {tri} | {rel} | {'' if ratio is None else f'{ratio:.2f}×'} "
           f"| {r['angle_std']:.1f}° | {r['angle_min']:.1f}° | {r['lt30_pct']:.2f} | {r['hausdorff_pct']:.3f} "
           f"| {r['hausdorff2_pct']:.3f} | {r['rms2_pct']:.4f} |")
 PY

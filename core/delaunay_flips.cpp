@@ -4,15 +4,24 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <unordered_set>
 
 namespace gr {
 namespace {
 
-std::uint64_t edgeKey(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+/// Whether vertex y is a neighbour of the vertex at `corner`, turning around that vertex through
+/// the (up to date) opposite corners: both ways if the fan is open.
+bool isNeighbour(const TriMesh& m, int corner, int y) {
+  for (int dir = 0; dir < 2; ++dir) {
+    int k = corner;
+    while (true) {
+      if (m.vertex(TriMesh::next(k)) == y || m.vertex(TriMesh::prev(k)) == y) return true;
+      const int o = m.oppositeCorner[dir == 0 ? TriMesh::prev(k) : TriMesh::next(k)];
+      if (o < 0) break;  // the fan is open: turn the other way from the start
+      k = dir == 0 ? TriMesh::prev(o) : TriMesh::next(o);
+      if (k == corner) return false;  // all the way round
+    }
+  }
+  return false;
 }
 
 /// Angle at p of the triangle (p, q, r), in radians.
@@ -42,10 +51,6 @@ DelaunayFlipResult flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& param
   const double tolerance = params.toleranceDegrees * M_PI / 180.0;
   const auto V = [&](int c) { return tris[c / 3][c % 3]; };
 
-  std::unordered_set<std::uint64_t> edges;
-  edges.reserve(3 * tris.size());
-  for (const Tri& t : tris)
-    for (int k = 0; k < 3; ++k) edges.insert(edgeKey(t[k], t[(k + 1) % 3]));
 
   // Work list of corners; each interior edge is checked from the corner of its lower-numbered side.
   std::vector<int> work;
@@ -76,7 +81,7 @@ DelaunayFlipResult flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& param
     const Vec3 &px = pos[x], &pa = pos[a], &pb = pos[b], &py = pos[y];
     const double facing = angleAt(px, pa, pb) + angleAt(py, pb, pa);
     if (facing <= M_PI + tolerance) continue;  // locally Delaunay
-    if (edges.count(edgeKey(x, y))) continue;
+    if (isNeighbour(mesh, c, y)) continue;  // (x, y) is already an edge
     // Feature and orientation checks: both old and new pairs nearly coplanar, same side up.
     const Vec3 n1 = unitNormal(px, pa, pb), n2 = unitNormal(py, pb, pa);
     const Vec3 m1 = unitNormal(px, pa, py), m2 = unitNormal(px, py, pb);
@@ -105,15 +110,11 @@ DelaunayFlipResult flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& param
     link(f0 + 2, oXA);     // y faces x->a
     link(g0 + 0, oBX);     // y faces b->x
     link(g0 + 2, oYB);     // x faces y->b
-    edges.erase(edgeKey(a, b));
-    edges.insert(edgeKey(x, y));
     ++r.flips;
     for (int k : {f0, f0 + 2, g0, g0 + 2}) enqueue(k);
   }
-  if (r.flips > 0) {
-    Expected<TriMesh> rebuilt = buildTriMesh(std::move(mesh.positions), std::move(tris));
-    mesh = std::move(rebuilt).value();  // same vertices, manifold faces: cannot fail
-  }
+  // oppositeCorner is up to date and flips keep the topology: only the vertex lists change.
+  if (r.flips > 0) rebuildVertexCorners(mesh);
   return r;
 }
 

@@ -15,7 +15,8 @@
 //
 // Flips never change the vertices, the number of faces, the components, genus or boundaries.
 // Edges to check are kept in a work list; each flip re-queues the quad's four outer edges.
-// Cost: O(F) plus O(1) per flip (hash set of edges); at most maxFlipsPerFace * F flips.
+// Cost: O(F) plus O(valence) per flip (the new diagonal is looked up around its vertex); at most
+// maxFlipsPerFace * F flips. The adjacency is updated flip by flip, the vertex lists once at the end.
 #pragma once
 
 #include "core/tri_mesh.h"

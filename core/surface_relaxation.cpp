@@ -48,34 +48,32 @@ Vec3 closestBary(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
 /// The input surface as the walks see it: faces, and which edges they may not cross.
 class SurfaceWalker {
  public:
-  SurfaceWalker(const TriMesh& mesh, double featureAngleDegrees) : mesh_(mesh), blocked_(3 * mesh.faceCount(), 0) {
-    const int F = mesh.faceCount();
-    std::vector<Vec3>& normal = normal_;
-    normal.resize(F);
-    for (int f = 0; f < F; ++f) {
-      const Tri& t = mesh.triangles[f];
-      const Vec3 n = (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
-      const double len = n.norm();
-      normal[f] = len > 0 ? Vec3(n / len) : Vec3::Zero();
-    }
-    const double cosFeature = std::cos(featureAngleDegrees * kDegree);
-    sharpVertex_.assign(mesh.vertexCount(), 0);
-    for (int c = 0; c < 3 * F; ++c) {
-      const int o = mesh.oppositeCorner[c];
-      // Boundary edges, and edges next to a degenerate face, count as sharp too.
-      const bool sharp = o < 0 || normal[c / 3].dot(normal[o / 3]) < cosFeature;
-      if (!sharp) continue;
-      blocked_[c] = 1;
-      sharpVertex_[mesh.vertex(TriMesh::next(c))] = 1;
-      sharpVertex_[mesh.vertex(TriMesh::prev(c))] = 1;
-    }
-  }
+  // Everything is computed where the walks go: the cost follows the output, not the input.
+  SurfaceWalker(const TriMesh& mesh, double featureAngleDegrees)
+      : mesh_(mesh), cosFeature_(std::cos(featureAngleDegrees * kDegree)) {}
 
   /// Unit normal of an input face (zero for a degenerate face).
-  const Vec3& normal(int face) const { return normal_[face]; }
+  Vec3 normal(int face) const {
+    const Vec3 n = areaNormal(face);
+    const double len = n.norm();
+    return len > 0 ? Vec3(n / len) : Vec3::Zero();
+  }
 
-  /// Whether input vertex v has a sharp edge (a crease, corner or boundary vertex).
-  bool sharpVertex(int v) const { return sharpVertex_[v] != 0; }
+  /// Whether the edge facing `corner` may not be crossed: a boundary, a crease sharper than the
+  /// feature angle, or an edge of a degenerate face.
+  bool blocked(int corner) const {
+    const int o = mesh_.oppositeCorner[corner];
+    if (o < 0) return true;
+    const Vec3 a = areaNormal(TriMesh::face(corner)), b = areaNormal(TriMesh::face(o));
+    return !(a.dot(b) > cosFeature_ * std::sqrt(a.squaredNorm() * b.squaredNorm()));  // also if degenerate
+  }
+
+  /// Whether input vertex v has a blocked edge (a crease, corner or boundary vertex).
+  bool sharpVertex(int v) const {
+    for (const int* c = mesh_.cornersBegin(v); c != mesh_.cornersEnd(v); ++c)
+      if (blocked(TriMesh::next(*c)) || blocked(TriMesh::prev(*c))) return true;
+    return false;
+  }
 
   /// A face that contains the point (for a vertex: its first face).
   int faceOf(const SurfacePoint& p) const {
@@ -105,7 +103,7 @@ class SurfaceWalker {
       for (int k = 0; k < 3; ++k) {
         if (bary[k] != 0) continue;
         const int c = 3 * face + k;  // the corner facing the edge the point is on
-        if (!blocked_[c]) tryFace(TriMesh::face(mesh_.oppositeCorner[c]));
+        if (!blocked(c)) tryFace(TriMesh::face(mesh_.oppositeCorner[c]));
         if (bary[(k + 1) % 3] == 0) fan(3 * face + (k + 2) % 3, tryFace);
         if (bary[(k + 2) % 3] == 0) fan(3 * face + (k + 1) % 3, tryFace);
       }
@@ -139,7 +137,7 @@ class SurfaceWalker {
       for (int guard = 0; guard < 64; ++guard) {
         // Cross the edge (corner's vertex, next) or (corner's vertex, prev) of c's face.
         const int facing = dir == 0 ? TriMesh::prev(c) : TriMesh::next(c);
-        if (blocked_[facing]) break;
+        if (blocked(facing)) break;
         const int o = mesh_.oppositeCorner[facing];
         c = dir == 0 ? TriMesh::prev(o) : TriMesh::next(o);
         if (TriMesh::face(c) == TriMesh::face(corner)) break;
@@ -149,9 +147,13 @@ class SurfaceWalker {
   }
 
   const TriMesh& mesh_;
-  std::vector<Vec3> normal_;       ///< per face, unit (zero if degenerate)
-  std::vector<char> blocked_;      ///< per corner: the edge it faces may not be crossed
-  std::vector<char> sharpVertex_;  ///< per vertex
+  double cosFeature_;
+
+  /// Cross product of two edges of the face: normal times twice the area.
+  Vec3 areaNormal(int face) const {
+    const Tri& t = mesh_.triangles[face];
+    return (mesh_.positions[t[1]] - mesh_.positions[t[0]]).cross(mesh_.positions[t[2]] - mesh_.positions[t[0]]);
+  }
 };
 
 /// Cosine of the smallest angle of triangle (p, q, r): the angle facing the shortest edge.
@@ -216,7 +218,7 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
   const auto tryMove = [&](int v, const Vec3& target, int face, double smallestBefore, double floor, double maxAway) {
     const SurfacePoint moved = walker.project(target, face);
     const Vec3 q = walker.pointOf(moved.face, moved.bary);
-    const Vec3& normalThere = walker.normal(moved.face);
+    const Vec3 normalThere = walker.normal(moved.face);
     before.clear();
     after.clear();
     ring(v, pos[v], &before);

@@ -54,7 +54,9 @@ Status validate(const std::vector<Vec3>& positions, const std::vector<Tri>& tria
   return Status::ok();
 }
 
-void buildVertexCorners(TriMesh& m) {
+}  // namespace
+
+void rebuildVertexCorners(TriMesh& m) {
   const int nv = m.vertexCount();
   m.vertexCornerBegin.assign(nv + 1, 0);
   for (const Tri& t : m.triangles)
@@ -64,6 +66,8 @@ void buildVertexCorners(TriMesh& m) {
   std::vector<int> fill(m.vertexCornerBegin.begin(), m.vertexCornerBegin.end() - 1);
   for (int c = 0; c < 3 * m.faceCount(); ++c) m.vertexCorners[fill[m.vertex(c)]++] = c;
 }
+
+namespace {
 
 /// For each corner, finds the face across its opposite edge by scanning the corners of one
 /// endpoint: O(F * valence), no hash map.
@@ -211,7 +215,7 @@ Expected<TriMesh> buildTriMesh(std::vector<Vec3> positions, std::vector<Tri> tri
   TriMesh m;
   m.positions = std::move(positions);
   m.triangles = std::move(triangles);
-  buildVertexCorners(m);
+  rebuildVertexCorners(m);
   buildOppositeCorners(m);
   countTopology(m);
   return m;

@@ -85,6 +85,10 @@ struct TriMesh {
 /// are accepted and counted in `topology`; algorithms that cannot handle them check it.
 Expected<TriMesh> buildTriMesh(std::vector<Vec3> positions, std::vector<Tri> triangles);
 
+/// Rebuilds the vertex -> corners lists (vertexCornerBegin, vertexCorners) after the triangles
+/// changed in place with oppositeCorner kept up to date and the topology unchanged (edge flips).
+void rebuildVertexCorners(TriMesh& mesh);
+
 /// Faces whose vertices lie in the given component.
 std::vector<int> facesOfComponent(const TriMesh& mesh, int component);
 

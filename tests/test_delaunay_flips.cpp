@@ -83,6 +83,34 @@ TEST(DelaunayFlips, PlanarPointSetBecomesDelaunay) {
   }
 }
 
+/// The adjacency the flips keep up to date equals the one built from scratch from the flipped
+/// triangles, and the topology is unchanged (recounted from scratch as well).
+void expectAdjacencyAsIfRebuilt(const TriMesh& m) {
+  const TriMesh fresh = buildTriMesh(m.positions, m.triangles).value();
+  EXPECT_EQ(m.oppositeCorner, fresh.oppositeCorner);
+  EXPECT_EQ(m.vertexCornerBegin, fresh.vertexCornerBegin);
+  EXPECT_EQ(m.vertexCorners, fresh.vertexCorners);
+  EXPECT_EQ(m.topology.components, fresh.topology.components);
+  EXPECT_EQ(m.topology.genus, fresh.topology.genus);
+  EXPECT_EQ(m.topology.boundaryLoops, fresh.topology.boundaryLoops);
+  EXPECT_EQ(m.topology.inconsistentEdges, fresh.topology.inconsistentEdges);
+  EXPECT_TRUE(fresh.topology.isManifold());
+}
+
+TEST(DelaunayFlips, AdjacencyIsThatOfTheFlippedTriangles) {
+  TriMesh grid = randomDiagonalGrid(20, 0.3, 5);  // open: boundary fans
+  EXPECT_GT(flipToDelaunay(grid).flips, 0);
+  expectAdjacencyAsIfRebuilt(grid);
+  // Closed: a sphere whose vertices are jittered along it, so that many diagonals flip.
+  TriMesh sphere = test::icosphere(3);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-0.04, 0.04);
+  for (Vec3& p : sphere.positions) p = (p + Vec3(u(rng), u(rng), u(rng))).normalized();
+  sphere = buildTriMesh(sphere.positions, sphere.triangles).value();
+  EXPECT_GT(flipToDelaunay(sphere).flips, 0);
+  expectAdjacencyAsIfRebuilt(sphere);
+}
+
 TEST(DelaunayFlips, MinimumAngleDoesNotDecrease) {
   TriMesh m = randomDiagonalGrid(30, 0.35, 7);
   const double before = angleStatistics(m).minDegrees;

@@ -8,6 +8,13 @@
 //                         thread CPU time.
 //   OursNoRelax/...       the same without the relaxation (the paper's triangulation alone).
 //   OursSubVertex/...     the same as Ours with FpsParams::subVertexPlacement.
+//   MeshLabIsotropic/...  MeshLab 2020.09's "Remeshing: Isotropic Explicit Remeshing" through the
+//                         system meshlabserver, script bench/meshlab_isotropic_remeshing.mlx (MeshLab's
+//                         defaults, TargetLen calibrated untimed to our vertex count as for CGAL).
+//                         Wall time of `xvfb-run -a meshlabserver -i <mesh> -o out.off -s script`
+//                         minus the median of 3 runs of the same command without the script (start-up,
+//                         plugin loading, reading and writing the mesh): the filter's own time, about.
+//                         Small meshes only.
 //   Cgal/<mesh>/<target>  CGAL::Polygon_mesh_processing::isotropic_remeshing on a Surface_mesh<Epick>
 //                         copy (copy untimed), 3 iterations, protect_constraints(false). Target edge
 //                         length L calibrated untimed so that its vertex count matches ours: start
@@ -26,9 +33,18 @@
 
 #include <benchmark/benchmark.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <map>
+#include <regex>
+#include <sstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -43,6 +59,7 @@
 #include "core/surface_relaxation.h"
 #include "core/metric.h"
 #include "core/tri_mesh.h"
+#include "core/vcg_mesh.h"
 
 namespace {
 
@@ -266,6 +283,102 @@ void BM_Cgal(benchmark::State& state, const Case& c) {
 }
 
 // ------------------------------------------------------------------------------------------------
+// MeshLab's isotropic explicit remeshing through the system meshlabserver
+
+/// Wall seconds of a shell command, or a negative value if it failed.
+double wallSeconds(const std::string& command) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int rc = std::system(command.c_str());
+  const auto t1 = std::chrono::steady_clock::now();
+  return rc == 0 ? std::chrono::duration<double>(t1 - t0).count() : -1.0;
+}
+
+/// bench/meshlab_isotropic_remeshing.mlx with TargetLen set to `length`.
+bool writeIsotropicScript(const std::string& path, double length) {
+  std::ifstream in(std::string(GR_BENCH_DIR) + "/meshlab_isotropic_remeshing.mlx");
+  if (!in) return false;
+  std::stringstream text;
+  text << in.rdbuf();
+  char value[64];
+  std::snprintf(value, sizeof value, "%.9g", length);
+  const std::string script = std::regex_replace(text.str(), std::regex("name=\"TargetLen\" value=\"[^\"]*\""),
+                                                std::string("name=\"TargetLen\" value=\"") + value + "\"");
+  std::ofstream(path) << script;
+  return true;
+}
+
+void BM_MeshLabIsotropic(benchmark::State& state, const Case& c) {
+  BenchMesh* bm = getMesh(state, c.mesh);
+  if (!bm) return;
+  auto found = oursVertexCount().find(c.key());
+  if (found == oursVertexCount().end()) {
+    std::optional<OursRun> run = runOurs(state, *bm, targetCount(c, *bm), Variant{});
+    if (!run) return;
+    found = oursVertexCount().emplace(c.key(), run->result.mesh.vertexCount()).first;
+  }
+  const double n = found->second;
+  char dirTemplate[] = "/tmp/bench_remesh_XXXXXX";
+  if (!mkdtemp(dirTemplate)) {
+    state.SkipWithError("mkdtemp failed");
+    return;
+  }
+  const std::string dir = dirTemplate, script = dir + "/script.mlx", out = dir + "/out.off", log = dir + "/log.txt";
+  const std::string input = std::string(GR_MESH_DIR) + "/" + c.mesh.file;
+  const std::string startup = "xvfb-run -a meshlabserver -i '" + input + "' -o '" + out + "' > '" + log + "' 2>&1";
+  const std::string command = "xvfb-run -a meshlabserver -i '" + input + "' -o '" + out + "' -s '" + script +
+                              "' > '" + log + "' 2>&1";
+  // Untimed: the edge length that gives our vertex count, as for CGAL (L from the area, then
+  // L *= sqrt(n_obtained / N) until within 2%, at most 4 runs).
+  double area = 0.0;
+  for (const gr::Tri& t : bm->tri.triangles)
+    area += 0.5 * (bm->tri.positions[t[1]] - bm->tri.positions[t[0]]).cross(bm->tri.positions[t[2]] - bm->tri.positions[t[0]]).norm();
+  double length = std::sqrt(2.0 * area / (std::sqrt(3.0) * n));
+  int calibrationRuns = 0;
+  gr::Expected<gr::TriMesh> result = gr::invalidInput("not run");
+  for (; calibrationRuns < 4; ++calibrationRuns) {
+    if (!writeIsotropicScript(script, length) || wallSeconds(command) < 0) {
+      state.SkipWithError(("meshlabserver failed, see " + log).c_str());
+      return;
+    }
+    result = gr::loadTriMesh(out);
+    if (!result) {
+      state.SkipWithError(("MeshLab output: " + result.status().message).c_str());
+      return;
+    }
+    const double obtained = result->vertexCount();
+    if (std::abs(obtained - n) <= 0.02 * n) break;
+    length *= std::sqrt(obtained / n);
+  }
+  std::vector<double> startupRuns;
+  for (int i = 0; i < 3; ++i) startupRuns.push_back(wallSeconds(startup));
+  std::sort(startupRuns.begin(), startupRuns.end());
+  const double startupSeconds = startupRuns[1];
+  if (startupSeconds < 0) {
+    state.SkipWithError(("meshlabserver (start-up run) failed, see " + log).c_str());
+    return;
+  }
+  for (auto _ : state) {
+    const double seconds = wallSeconds(command);
+    if (seconds < 0) {
+      state.SkipWithError(("meshlabserver failed, see " + log).c_str());
+      return;
+    }
+    state.SetIterationTime(std::max(0.0, seconds - startupSeconds));
+  }
+  result = gr::loadTriMesh(out);
+  if (!result) {
+    state.SkipWithError(("MeshLab output: " + result.status().message).c_str());
+    return;
+  }
+  state.counters["edge_length"] = length;
+  state.counters["calibration_runs"] = calibrationRuns + 1;
+  state.counters["startup_ms"] = 1e3 * startupSeconds;
+  setQualityCounters(state, *bm, *result, static_cast<int>(n));
+  for (const std::string& f : {script, out, log}) std::remove(f.c_str());
+  rmdir(dir.c_str());
+}
+
+// ------------------------------------------------------------------------------------------------
 
 /// Times are CPU time. Each small case runs 3 repetitions of at least 0.2 s (the report takes the
 /// median); the 1.66M-vertex case runs once.
@@ -288,6 +401,10 @@ void registerAll() {
     add("Cgal", BM_Cgal, c);
     add("OursNoRelax", BM_OursNoRelax, c);
     if (c.mesh.subdivisions == 0) add("OursSubVertex", BM_OursSubVertex, c);
+    if (c.mesh.subdivisions == 0)  // one meshlabserver process per run: wall time, 3 single runs
+      benchmark::RegisterBenchmark(("MeshLabIsotropic/" + c.key()).c_str(), BM_MeshLabIsotropic, c)
+          ->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(1)->Repetitions(kRepetitions)
+          ->DisplayAggregatesOnly(true);
   }
 }
 

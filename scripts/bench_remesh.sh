@@ -2,7 +2,7 @@
 # The remeshing benchmark: installs what is missing, builds bench_remesh, runs it (ours and CGAL's
 # isotropic remeshing in one process, same meshes, same vertex counts), then prints a markdown
 # table of times, ratios and triangle quality.
-#   bash scripts/bench_remesh.sh                               # everything (~2.5 min on 2 cores)
+#   bash scripts/bench_remesh.sh                               # everything (~9 min on 2 cores)
 #   bash scripts/bench_remesh.sh --benchmark_filter=-sub3      # extra arguments go to the binary
 # Output: $BUILD_DIR/bench_remesh.json (the run) and the table on stdout.
 # Run it on an otherwise idle machine: the table compares times taken in this one run.
@@ -50,7 +50,7 @@ print(f"Run: {ctx.get('date', '?')} on {ctx.get('host_name', '?')}, {ctx.get('nu
       "ours: the filter's defaults (3 rounds of relaxation); ours, no relaxation: the paper's triangulation "
       "alone (Relaxation = 0); ours + sub-vertex: FpsParams::subVertexPlacement (the filter's SubVertexPlacement).")
 print()
-print("| mesh | target | method | vertices | faces | added | time | engine | sampling | triangulation | relaxation | CGAL / ours "
+print("| mesh | target | method | vertices | faces | added | time | engine | sampling | triangulation | relaxation | other / ours "
       "| angle std | min angle | % < 30° | Hausdorff % | two-sided % | RMS % |")
 print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
 shown = set()

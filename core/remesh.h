@@ -20,7 +20,9 @@ struct RemeshParams {
   FpsParams sampling;            ///< target count or spacing, seed, sub-vertex placement
   DelaunayParams triangulation;  ///< repair rounds and the final Delaunay flips
   /// Tangential relaxation after the triangulation (3 rounds by default). Its Laplacian evens
-  /// out edge lengths, so with a non-uniform metric (adaptive remeshing) set iterations to 0.
+  /// out edge lengths, so with a non-uniform metric (adaptive remeshing) set iterations to 0
+  /// (measured: a Laplacian weighted by the metric keeps the density, but moves the samples the
+  /// metric put on sharp edges: fandisk at 10%, two-sided Hausdorff 1.47% -> 2.93%).
   RelaxationParams relaxation;
 };
 

@@ -36,7 +36,10 @@
 namespace gr {
 
 struct DelaunayParams {
-  int maxRepairRounds = 50;  ///< rounds of sample insertion before giving up (NotConverged)
+  /// Rounds of sample insertion before giving up (NotConverged). Each round adds at least one
+  /// sample, so the repair ends within V rounds anyway; the cap bounds its time. A mesh with many
+  /// small holes needs many (elephant-with-holes.off, 106 boundary loops: 176 rounds from 50 samples).
+  int maxRepairRounds = 1000;
   /// Last, flip edges of the valid dual that are not locally Delaunay (delaunay_flips.h): the
   /// discrete Voronoi diagram picks the diagonal of nearly cocircular samples at random.
   bool delaunayFlips = true;

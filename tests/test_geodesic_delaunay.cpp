@@ -90,7 +90,8 @@ TEST_P(DelaunayWithBoundaries, BoundaryLoopsKept) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, DelaunayWithBoundaries,
-                         ::testing::Combine(::testing::Values("mech-holes-shark.off", "mask_cone.off"),
+                         ::testing::Combine(::testing::Values("mech-holes-shark.off", "mask_cone.off",
+                                                              "elephant-with-holes.off"),  // 106 holes
                                             ::testing::Values(0.1, 0.3), ::testing::Bool()),
                          [](const ::testing::TestParamInfo<std::tuple<std::string, double, bool>>& p) {
                            std::string n = std::get<0>(p.param);

@@ -23,8 +23,9 @@ const std::vector<FilterSpec>& filterTable() {
        "distances from fast marching, then the geodesic Delaunay triangulation of the samples (the dual of "
        "their geodesic Voronoi diagram). Where the samples are too sparse for a valid triangulation, samples "
        "are added until the result is a manifold, consistently oriented mesh with the input's components and "
-       "genus and boundary loops (boundaries are sampled first and stay boundaries). The result goes to a new "
-       "layer; vertex colour and quality of the input are carried over.<br>See G. Peyr&eacute; and L. Cohen, <i>Geodesic "
+       "genus and boundary loops (boundaries are sampled first and stay boundaries). Last, a few rounds of "
+       "tangential relaxation on the input surface give well-shaped triangles (creases and tips stay). The "
+       "result goes to a new layer; vertex colour and quality of the input are carried over.<br>See G. Peyr&eacute; and L. Cohen, <i>Geodesic "
        "Remeshing Using Front Propagation</i>, IJCV 2006, &sect;3.1&ndash;3.2.",
        MeshFilterInterface::Remeshing, MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR, declareUniformRemesh,
        applyUniformRemesh},

@@ -189,7 +189,9 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
     if (round >= params.maxRepairRounds)
       return Status{StatusCode::NotConverged, "the geodesic Delaunay triangulation is still invalid after " +
                                                   std::to_string(round) + " rounds of sample insertion"};
-    if (!progress.report(double(round + 1) / (params.maxRepairRounds + 1), "Geodesic Delaunay repair"))
+    // How many rounds a mesh needs is not known ahead (1 to a few hundred): the bar moves by
+    // a tenth of what is left each round.
+    if (!progress.report(1.0 - std::pow(0.9, round + 1), "Geodesic Delaunay repair"))
       return cancelled();
     // New samples: in each bad cell, its vertex farthest from the samples.
     std::sort(bad.begin(), bad.end());

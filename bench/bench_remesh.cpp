@@ -237,6 +237,18 @@ void BM_OursNoRelax(benchmark::State& state, const Case& c) { runOursCase(state,
 /// With FpsParams::subVertexPlacement (the filter's SubVertexPlacement option).
 void BM_OursSubVertex(benchmark::State& state, const Case& c) { runOursCase(state, c, Variant{true, 3}); }
 
+/// The vertex count the competitors are matched to: ours (filter defaults), run untimed if its
+/// benchmark was filtered out; nullopt after SkipWithError.
+std::optional<int> vertexCountToMatch(benchmark::State& state, const BenchMesh& bm, const Case& c) {
+  auto found = oursVertexCount().find(c.key());
+  if (found == oursVertexCount().end()) {
+    std::optional<OursRun> run = runOurs(state, bm, targetCount(c, bm), Variant{});
+    if (!run) return std::nullopt;
+    found = oursVertexCount().emplace(c.key(), run->result.mesh.vertexCount()).first;
+  }
+  return found->second;
+}
+
 // ------------------------------------------------------------------------------------------------
 // CGAL isotropic remeshing
 
@@ -245,14 +257,9 @@ void BM_Cgal(benchmark::State& state, const Case& c) {
   if (!bm) return;
   SurfaceMesh* input = gr::bench::cachedSurfaceMesh(state, bm->tri, bm->cgal);
   if (!input) return;
-  // The vertex count to match: ours, run untimed if its benchmark was filtered out.
-  auto found = oursVertexCount().find(c.key());
-  if (found == oursVertexCount().end()) {
-    std::optional<OursRun> run = runOurs(state, *bm, targetCount(c, *bm), Variant{});
-    if (!run) return;
-    found = oursVertexCount().emplace(c.key(), run->result.mesh.vertexCount()).first;
-  }
-  const double n = found->second;
+  const std::optional<int> match = vertexCountToMatch(state, *bm, c);
+  if (!match) return;
+  const double n = *match;
   // Calibrated once per case (the repetitions reuse it).
   static std::map<std::string, gr::bench::CgalCalibration> calibrated;
   gr::bench::CgalCalibration& calibration = calibrated[c.key()];
@@ -310,13 +317,9 @@ bool writeIsotropicScript(const std::string& path, double length) {
 void BM_MeshLabIsotropic(benchmark::State& state, const Case& c) {
   BenchMesh* bm = getMesh(state, c.mesh);
   if (!bm) return;
-  auto found = oursVertexCount().find(c.key());
-  if (found == oursVertexCount().end()) {
-    std::optional<OursRun> run = runOurs(state, *bm, targetCount(c, *bm), Variant{});
-    if (!run) return;
-    found = oursVertexCount().emplace(c.key(), run->result.mesh.vertexCount()).first;
-  }
-  const double n = found->second;
+  const std::optional<int> match = vertexCountToMatch(state, *bm, c);
+  if (!match) return;
+  const double n = *match;
   char dirTemplate[] = "/tmp/bench_remesh_XXXXXX";
   if (!mkdtemp(dirTemplate)) {
     state.SkipWithError("mkdtemp failed");

@@ -268,22 +268,25 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
       const double smallest = tryMove(v, p + move, face, ring(v, p, nullptr), 0.0, maxAway);
       if (smallest >= goal) continue;
       // Still a small angle here (at a tip, a saddle, next to a fixed vertex): the mean of the
-      // ring is not better, so try steps in eight tangent directions and keep the best.
+      // ring is not better, so try steps in eight tangent directions from where the vertex is
+      // now and keep the best. No deviation limit: a bad triangle costs more than the error.
+      const Vec3 here = pos[v];
+      const int hereFace = walker.faceOf(points[v]);
       const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
       double best = smallest;
-      Vec3 bestTarget = pos[v];
+      Vec3 bestTarget = here;
       for (const double step : {0.4, 0.2, 0.1})
         for (int k = 0; k < 8; ++k) {
-          const Vec3 target = p + step * ringLength * (std::cos(k * M_PI / 4) * e1 + std::sin(k * M_PI / 4) * e2);
-          const SurfacePoint moved = walker.project(target, face);
-          const Vec3 q = walker.pointOf(moved.face, moved.bary);
-          const double s = ring(v, q, nullptr);
+          const Vec3 target = here + step * ringLength * (std::cos(k * M_PI / 4) * e1 + std::sin(k * M_PI / 4) * e2);
+          const SurfacePoint moved = walker.project(target, hereFace);
+          const double s = ring(v, walker.pointOf(moved.face, moved.bary), nullptr);
           if (s > best) {
             best = s;
             bestTarget = target;
           }
         }
-      if (best > smallest) tryMove(v, bestTarget, face, smallest, smallest, std::numeric_limits<double>::infinity());
+      if (best > smallest)
+        tryMove(v, bestTarget, hereFace, smallest, smallest, std::numeric_limits<double>::infinity());
     }
     r.flips += flipToDelaunay(output, params.flips).flips;
     ++r.iterations;

@@ -12,13 +12,16 @@
 //        | /                       the face p lies in to neighbouring faces while the distance
 //   -----p-----  output vertex     to q decreases; the walk never crosses a sharp input edge
 //
-// A move is kept only if no incident face turns over and the smallest angle of the incident faces
-// does not fall below min(its previous value, 30 degrees) ("smart" Laplacian), so no triangle is
-// made worse than the quality goal. Output vertices on the boundary, and those on an input vertex
-// that has a sharp edge (a crease or corner of the input), do not move.
+// A move is kept only if no incident face turns over (unless it then faces the way the input
+// does: an unfolding), the smallest angle of the incident faces does not fall below min(its
+// previous value, 30 degrees) ("smart" Laplacian), and the point the vertex leaves stays within
+// maxDeviation of the new faces (tips and ridges, where farthest-point samples sit, are kept).
+// Where a small angle remains, steps in eight tangent directions are tried and the best is kept.
+// Output vertices on the boundary, and those on an input vertex that has a sharp edge (a crease
+// or corner of the input), do not move.
 // Connectivity changes only by the flips: vertices, components, genus and boundaries are kept, and
 // every vertex stays on the input surface (its SurfacePoint is updated).
-// Cost: O(iterations * (F_out * valence + walk length)), plus one O(F_in) pass for the sharp edges.
+// Cost: O(iterations * F_out * (valence + walk length)); the input is read only where walks go.
 #pragma once
 
 #include <vector>

@@ -65,43 +65,6 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RealMeshAccuracy, ::testing::Values("fandisk.of
 namespace gr {
 namespace {
 
-/// The same surface with very bad triangles: every 12th interior edge (a, b), shared by faces
-/// (C, a, b) and (D, b, a), is split at a point m, alternately
-///  - near a (m = a + 0.002 (b - a)): needles (C, a, m), (D, m, a) with angles under 1 degree;
-///  - at its midpoint, then flipped: (C, a, b) stays and (b, a, m) has zero area, next to
-///    (b, m, D) and (m, a, D).
-/// New vertices are appended, so original indices and the exact distances there are unchanged.
-TriMesh withBadTriangles(const TriMesh& m, int* zeroAreaFaces) {
-  std::vector<Vec3> pos = m.positions;
-  std::vector<Tri> tris = m.triangles;
-  std::vector<char> used(m.faceCount(), 0);
-  *zeroAreaFaces = 0;
-  bool needle = true;
-  for (int c = 0; c < 3 * m.faceCount(); c += 12 * 3 + 1) {
-    const int o = m.oppositeCorner[c];
-    const int f = TriMesh::face(c);
-    if (o < 0 || used[f] || used[TriMesh::face(o)]) continue;
-    used[f] = used[TriMesh::face(o)] = 1;
-    const int C = m.vertex(c), a = m.vertex(TriMesh::next(c)), b = m.vertex(TriMesh::prev(c)), D = m.vertex(o);
-    const int mid = static_cast<int>(pos.size());
-    if (needle) {
-      pos.push_back(m.positions[a] + 0.002 * (m.positions[b] - m.positions[a]));
-      tris[f] = {C, a, mid};
-      tris.push_back({C, mid, b});
-      tris[TriMesh::face(o)] = {D, b, mid};
-      tris.push_back({D, mid, a});
-    } else {
-      pos.push_back(0.5 * (m.positions[a] + m.positions[b]));
-      tris[TriMesh::face(o)] = {b, a, mid};  // zero area
-      tris.push_back({b, mid, D});
-      tris.push_back({mid, a, D});
-      ++*zeroAreaFaces;
-    }
-    needle = !needle;
-  }
-  return std::move(buildTriMesh(pos, tris)).value();
-}
-
 /// Smallest angle of any face, in degrees.
 double smallestAngleDegrees(const TriMesh& m) {
   double smallest = 180.0;
@@ -131,7 +94,7 @@ TEST(BadTriangles, NeedlesAndZeroAreaFacesStayWithinTwiceTheGoodError) {
     SCOPED_TRACE(name);
     const TriMesh good = test::loadRealMesh(name);
     int zeroArea = 0;
-    const TriMesh bad = withBadTriangles(good, &zeroArea);
+    const TriMesh bad = test::withBadTriangles(good, &zeroArea);
     ASSERT_GT(zeroArea, 100);
     ASSERT_LT(smallestAngleDegrees(bad), 1.0);
     const std::vector<double> exact = oracle::exactGeodesic(good, 0);

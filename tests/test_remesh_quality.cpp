@@ -63,6 +63,49 @@ TEST_P(RemeshQuality, WellShapedTrianglesAtDefaultSettings) {
   EXPECT_GE(smallest, 20.0);
 }
 
+// The same pipeline on the same surfaces with needles (angles under 1 degree) and zero-area faces
+// (test::withBadTriangles): a valid mesh of the input's topology, every vertex finite and on the
+// input, and the same quality bounds.
+TEST(RemeshQualityBadTriangles, NeedlesAndZeroAreaFaces) {
+  for (const char* name : {"fandisk.off", "bunny00.off"}) {
+    SCOPED_TRACE(name);
+    int zeroArea = 0;
+    const TriMesh input = test::withBadTriangles(test::loadRealMesh(name), &zeroArea);
+    ASSERT_GT(zeroArea, 100);
+    FastMarcher marcher(input, Metric::uniform());
+    RemeshParams params;
+    params.sampling.targetCount = input.vertexCount() / 10;
+    const Expected<RemeshResult> remeshed = remesh(marcher, params);
+    ASSERT_TRUE(remeshed) << remeshed.status().message;
+    const TriMesh& out = remeshed->mesh.mesh;
+    const test::Recount in = test::recount(input.triangles, input.vertexCount());
+    const test::Recount rc = test::recount(out.triangles, out.vertexCount());
+    EXPECT_TRUE(rc.manifoldEdges && rc.manifoldVertices && rc.oriented);
+    EXPECT_EQ(rc.components, in.components);
+    EXPECT_EQ(rc.genusSum, in.genusSum);
+    for (int v = 0; v < out.vertexCount(); ++v) {
+      ASSERT_TRUE(out.positions[v].allFinite());
+      ASSERT_LT((remeshed->mesh.samplePoint[v].position(input) - out.positions[v]).norm(), 1e-9);
+    }
+    double smallest = 180.0;
+    int below30 = 0;
+    for (const Tri& t : out.triangles) {
+      double minAngle = 180.0;
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 u = out.positions[t[(k + 1) % 3]] - out.positions[t[k]];
+        const Vec3 w = out.positions[t[(k + 2) % 3]] - out.positions[t[k]];
+        minAngle = std::min(minAngle, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI);
+      }
+      smallest = std::min(smallest, minAngle);
+      below30 += minAngle < 30.0;
+    }
+    std::printf("%s with %d zero-area faces, 10%%: %d vertices, smallest angle %.1f deg, %.2f %% under 30 deg\n", name,
+                zeroArea, out.vertexCount(), smallest, 100.0 * below30 / out.faceCount());
+    EXPECT_GE(smallest, 20.0);
+    EXPECT_LE(double(below30) / out.faceCount(), 0.01);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Meshes, RemeshQuality,
                          ::testing::Combine(::testing::Values("fandisk.off", "bunny00.off", "armadillo.off"),
                                             ::testing::Values(0.1, 0.3)),

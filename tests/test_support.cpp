@@ -225,4 +225,35 @@ int numberBefore(const std::string& log, const std::string& words) {
   return std::atoi(log.substr(start, at - start).c_str());
 }
 
+TriMesh withBadTriangles(const TriMesh& m, int* zeroAreaFaces) {
+  std::vector<Vec3> pos = m.positions;
+  std::vector<Tri> tris = m.triangles;
+  std::vector<char> used(m.faceCount(), 0);
+  *zeroAreaFaces = 0;
+  bool needle = true;
+  for (int c = 0; c < 3 * m.faceCount(); c += 12 * 3 + 1) {
+    const int o = m.oppositeCorner[c];
+    const int f = TriMesh::face(c);
+    if (o < 0 || used[f] || used[TriMesh::face(o)]) continue;
+    used[f] = used[TriMesh::face(o)] = 1;
+    const int C = m.vertex(c), a = m.vertex(TriMesh::next(c)), b = m.vertex(TriMesh::prev(c)), D = m.vertex(o);
+    const int mid = static_cast<int>(pos.size());
+    if (needle) {
+      pos.push_back(m.positions[a] + 0.002 * (m.positions[b] - m.positions[a]));
+      tris[f] = {C, a, mid};
+      tris.push_back({C, mid, b});
+      tris[TriMesh::face(o)] = {D, b, mid};
+      tris.push_back({D, mid, a});
+    } else {
+      pos.push_back(0.5 * (m.positions[a] + m.positions[b]));
+      tris[TriMesh::face(o)] = {b, a, mid};  // zero area
+      tris.push_back({b, mid, D});
+      tris.push_back({mid, a, D});
+      ++*zeroAreaFaces;
+    }
+    needle = !needle;
+  }
+  return std::move(buildTriMesh(pos, tris)).value();
+}
+
 }  // namespace gr::test

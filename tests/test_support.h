@@ -55,3 +55,16 @@ namespace gr::test {
 int numberBefore(const std::string& log, const std::string& words);
 
 }  // namespace gr::test
+
+namespace gr::test {
+
+/// The same surface with very bad triangles: every 12th interior edge (a, b), shared by faces
+/// (C, a, b) and (D, b, a), is split at a point m, alternately
+///  - near a (m = a + 0.002 (b - a)): needles (C, a, m), (D, m, a) with angles under 1 degree;
+///  - at its midpoint, then flipped: (C, a, b) stays and (b, a, m) has zero area, next to
+///    (b, m, D) and (m, a, D).
+/// New vertices are appended, so original indices and the exact distances there are unchanged.
+/// zeroAreaFaces receives the number of zero-area faces made.
+TriMesh withBadTriangles(const TriMesh& m, int* zeroAreaFaces);
+
+}  // namespace gr::test

@@ -345,6 +345,9 @@ TEST_F(FilterInProcess, UniformRemeshBadInputLeavesTheDocumentAlone) {
   declare(*f);
   params.setValue(filters::param::kRefinement, IntValue(7));
   expectCleanFailure(*f, "Refinement must be 0 to 3");
+  declare(*f);
+  params.setValue(filters::param::kRelaxation, IntValue(-1));
+  expectCleanFailure(*f, "Relaxation must be 0 to 100 rounds");
   EXPECT_EQ(doc.meshList.size(), 3) << "a failed filter added a layer";
 }
 

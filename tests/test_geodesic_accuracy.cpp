@@ -66,17 +66,7 @@ namespace gr {
 namespace {
 
 /// Smallest angle of any face, in degrees.
-double smallestAngleDegrees(const TriMesh& m) {
-  double smallest = 180.0;
-  for (const Tri& t : m.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 u = m.positions[t[(k + 1) % 3]] - m.positions[t[k]], v = m.positions[t[(k + 2) % 3]] - m.positions[t[k]];
-      const double nu = u.norm(), nv = v.norm();
-      const double angle = (nu == 0 || nv == 0) ? 0.0 : std::acos(std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0));
-      smallest = std::min(smallest, angle * 180.0 / M_PI);
-    }
-  return smallest;
-}
+double smallestAngleDegrees(const TriMesh& m) { return test::recountAngles(m).smallestDegrees; }
 
 void expectFiniteMonotoneComplete(const TriMesh& m, const FastMarchingResult& r) {
   ASSERT_EQ(m.topology.components, 1);

@@ -42,19 +42,8 @@ TEST_P(RemeshQuality, WellShapedTrianglesAtDefaultSettings) {
   EXPECT_EQ(out.boundaryLoops, in.boundaryLoops);
   for (int v = 0; v < r.mesh.vertexCount(); ++v)
     ASSERT_LT((r.samplePoint[v].position(input) - r.mesh.positions[v]).norm(), 1e-9 * input.boundingBoxDiagonal());
-  double smallest = 180.0;
-  int below30 = 0;
-  for (const Tri& t : r.mesh.triangles) {
-    double minAngle = 180.0;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 u = r.mesh.positions[t[(k + 1) % 3]] - r.mesh.positions[t[k]];
-      const Vec3 w = r.mesh.positions[t[(k + 2) % 3]] - r.mesh.positions[t[k]];
-      minAngle = std::min(minAngle, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI);
-    }
-    smallest = std::min(smallest, minAngle);
-    below30 += minAngle < 30.0;
-  }
-  const double share = double(below30) / r.mesh.faceCount();
+  const test::AngleRecount angles = test::recountAngles(r.mesh);
+  const double smallest = angles.smallestDegrees, share = angles.shareBelow30;
   std::printf("%s %.0f%%: %d vertices (%d added), %d relaxation moves, smallest angle %.1f deg, %.2f %% of "
               "triangles under 30 deg\n",
               name.c_str(), 100 * fraction, r.mesh.vertexCount(), r.addedSamples, remeshed->relaxation.moves,
@@ -87,22 +76,11 @@ TEST(RemeshQualityBadTriangles, NeedlesAndZeroAreaFaces) {
       ASSERT_TRUE(out.positions[v].allFinite());
       ASSERT_LT((remeshed->mesh.samplePoint[v].position(input) - out.positions[v]).norm(), 1e-9);
     }
-    double smallest = 180.0;
-    int below30 = 0;
-    for (const Tri& t : out.triangles) {
-      double minAngle = 180.0;
-      for (int k = 0; k < 3; ++k) {
-        const Vec3 u = out.positions[t[(k + 1) % 3]] - out.positions[t[k]];
-        const Vec3 w = out.positions[t[(k + 2) % 3]] - out.positions[t[k]];
-        minAngle = std::min(minAngle, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI);
-      }
-      smallest = std::min(smallest, minAngle);
-      below30 += minAngle < 30.0;
-    }
+    const test::AngleRecount angles = test::recountAngles(out);
     std::printf("%s with %d zero-area faces, 10%%: %d vertices, smallest angle %.1f deg, %.2f %% under 30 deg\n", name,
-                zeroArea, out.vertexCount(), smallest, 100.0 * below30 / out.faceCount());
-    EXPECT_GE(smallest, 20.0);
-    EXPECT_LE(double(below30) / out.faceCount(), 0.01);
+                zeroArea, out.vertexCount(), angles.smallestDegrees, 100.0 * angles.shareBelow30);
+    EXPECT_GE(angles.smallestDegrees, 20.0);
+    EXPECT_LE(angles.shareBelow30, 0.01);
   }
 }
 

@@ -256,4 +256,21 @@ TriMesh withBadTriangles(const TriMesh& m, int* zeroAreaFaces) {
   return std::move(buildTriMesh(pos, tris)).value();
 }
 
+AngleRecount recountAngles(const TriMesh& mesh) {
+  AngleRecount r;
+  int below30 = 0;
+  for (const Tri& t : mesh.triangles) {
+    double minAngle = 180.0;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 u = mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]];
+      const Vec3 w = mesh.positions[t[(k + 2) % 3]] - mesh.positions[t[k]];
+      minAngle = std::min(minAngle, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI);
+    }
+    r.smallestDegrees = std::min(r.smallestDegrees, minAngle);
+    below30 += minAngle < 30.0;
+  }
+  r.shareBelow30 = mesh.faceCount() > 0 ? double(below30) / mesh.faceCount() : 0.0;
+  return r;
+}
+
 }  // namespace gr::test

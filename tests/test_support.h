@@ -68,3 +68,15 @@ namespace gr::test {
 TriMesh withBadTriangles(const TriMesh& m, int* zeroAreaFaces);
 
 }  // namespace gr::test
+
+namespace gr::test {
+
+/// Triangle angles recomputed from the positions, independently of gr::angleStatistics:
+/// atan2(|u x w|, u . w) at each corner (0 for a zero-length edge).
+struct AngleRecount {
+  double smallestDegrees = 180.0;  ///< smallest angle of any triangle
+  double shareBelow30 = 0.0;       ///< share of triangles whose smallest angle is under 30 degrees
+};
+AngleRecount recountAngles(const TriMesh& mesh);
+
+}  // namespace gr::test

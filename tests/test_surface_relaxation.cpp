@@ -21,16 +21,7 @@ namespace gr {
 namespace {
 
 /// Smallest angle of a mesh in degrees, recomputed from the positions.
-double smallestAngle(const TriMesh& m) {
-  double smallest = 180.0;
-  for (const Tri& t : m.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 u = m.positions[t[(k + 1) % 3]] - m.positions[t[k]];
-      const Vec3 w = m.positions[t[(k + 2) % 3]] - m.positions[t[k]];
-      smallest = std::min(smallest, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI);
-    }
-  return smallest;
-}
+double smallestAngle(const TriMesh& m) { return test::recountAngles(m).smallestDegrees; }
 
 /// The geodesic Delaunay triangulation of `count` farthest-point samples of `input`.
 DelaunayResult triangulate(const TriMesh& input, int count) {

@@ -51,7 +51,6 @@ DelaunayFlipResult flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& param
   const double tolerance = params.toleranceDegrees * M_PI / 180.0;
   const auto V = [&](int c) { return tris[c / 3][c % 3]; };
 
-
   // Work list of corners; each interior edge is checked from the corner of its lower-numbered side.
   std::vector<int> work;
   std::vector<char> queued(3 * tris.size(), 0);

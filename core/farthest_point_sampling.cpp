@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/fast_marching.h"
-#include "core/indexed_heap.h"
+#include "core/farthest_queue.h"
 
 namespace gr {
 namespace {
@@ -118,11 +118,14 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
 
   FpsResult r;
   const std::vector<double>& U = marcher.distance();
-  // The farthest interior and boundary vertices: min-heaps keyed by -U, each vertex once.
-  IndexedHeap farthest, farthestOnBoundary;
-  farthest.resize(mesh.vertexCount());
-  farthestOnBoundary.resize(mesh.vertexCount());
-  const auto topU = [](const IndexedHeap& heap) { return heap.empty() ? 0.0 : -heap.top().key; };
+  // The farthest interior and boundary vertices. Values below the floor are still ordered
+  // exactly, only scanned more slowly (farthest_queue.h).
+  const double floor = std::max(1e-9 * mesh.boundingBoxDiagonal(), 1e-300);
+  FarthestQueue farthest(U, floor), farthestOnBoundary(U, floor);
+  const auto topU = [&U](FarthestQueue& queue) {
+    const int v = queue.top();
+    return v < 0 ? 0.0 : U[v];
+  };
   const int cap = params.targetCount > 0 ? params.targetCount : usable;
   int next = first;
   double nextU = kUnreached;
@@ -145,7 +148,7 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
       if (Status s = marcher.addSource(next, static_cast<int>(r.samples.size()) - 1); !s) return s;
       if (Status s = marcher.propagate(); !s) return s;
     }
-    for (int v : marcher.acceptedOrder()) (onBoundary[v] ? farthestOnBoundary : farthest).set(v, -U[v]);
+    for (int v : marcher.acceptedOrder()) (onBoundary[v] ? farthestOnBoundary : farthest).update(v);
     if (static_cast<int>(r.samples.size()) >= cap) break;
     if (!progress.report(double(r.samples.size()) / cap, "Farthest point sampling")) return cancelled();
     if (!pending.empty()) {
@@ -158,7 +161,7 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
     if (std::max(interiorU, boundaryU) <= 0.0) break;  // every vertex is a sample
     if (params.minSpacing > 0.0 && std::max(interiorU, boundaryU) < params.minSpacing) break;
     const bool boundaryFirst = boundaryU > 0.0 && boundaryU * params.boundaryPriority >= interiorU;
-    next = boundaryFirst ? farthestOnBoundary.top().v : farthest.top().v;
+    next = boundaryFirst ? farthestOnBoundary.top() : farthest.top();
     nextU = boundaryFirst ? boundaryU : interiorU;
   }
   r.coveringRadius = std::max(topU(farthest), topU(farthestOnBoundary));

@@ -3,8 +3,8 @@
 // The first sample is the vertex farthest from a start vertex chosen by `seed`; each next sample
 // is the vertex farthest from all samples so far, where the geodesic distance U_n is largest.
 // U_{n+1} = min(U_n, U_x) is updated incrementally: the new front only enters the vertices it
-// improves (FastMarcher). The maximum is tracked in a max-heap fed with the vertices each step
-// changed, so no step scans all vertices. A component with no sample yet is infinitely far: each
+// improves (FastMarcher). The maximum is tracked in a bucket queue (farthest_queue.h) fed with
+// the vertices each step changed, so no step scans all vertices. A component with no sample yet is infinitely far: each
 // other component gets its lowest-numbered vertex as first sample before any component gets a
 // second one. On a mesh with boundaries, boundary vertices take precedence (boundaryPriority),
 // so each loop is sampled before the interior near it.

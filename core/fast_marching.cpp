@@ -24,9 +24,9 @@ Vec3 SurfacePoint::position(const TriMesh& mesh) const {
   return bary[0] * mesh.positions[t[0]] + bary[1] * mesh.positions[t[1]] + bary[2] * mesh.positions[t[2]];
 }
 
-FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric)
-    : mesh_(mesh), splits_(findAcuteSplits(mesh)), uniform_(metric.isUniform()) {
+FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh), uniform_(metric.isUniform()) {
   const int nv = mesh.vertexCount();
+  const AcuteSplits splits = findAcuteSplits(mesh);
   // Slots: the vertices in breadth-first order, so a front touches nearby memory.
   slotOf_.assign(nv, -1);
   vertexOf_.reserve(nv);
@@ -60,11 +60,11 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric)
       const int cn = TriMesh::next(c), cp = TriMesh::prev(c);
       f->a = slotOf_[mesh.vertex(cn)];
       f->b = slotOf_[mesh.vertex(cp)];
-      f->splitAtA = splits_.splitOfCorner[cn];
-      f->splitAtB = splits_.splitOfCorner[cp];
       f->lva = length[cp];
       f->lvb = length[cn];
       f->lab = length[c];
+      const int atA = splits.splitOfCorner[cn], atB = splits.splitOfCorner[cp];
+      f->split = atA >= 0 ? 2 * atA : atB >= 0 ? 2 * atB + 1 : -1;
     }
   }
   if (!uniform_) {
@@ -76,14 +76,17 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric)
                         (P_[i] + P_[f.a] + P_[f.b]) * (1.0 / 3.0)};
       }
   }
-  splitSlot_.resize(splits_.splits.size());
-  for (size_t i = 0; i < splits_.splits.size(); ++i) splitSlot_[i] = slotOf_[splits_.splits[i].vertex];
+  nearSplits_.resize(splits.splits.size());
+  for (size_t i = 0; i < splits.splits.size(); ++i) {
+    const AcuteSplit& sp = splits.splits[i];
+    nearSplits_[i] = {slotOf_[sp.vertex], sp.lenXR, sp.lenAR, sp.lenBR};
+  }
   farSplitBegin_.assign(nv + 1, 0);
-  farSplits_.reserve(splits_.splits.size());
+  farSplits_.reserve(splits.splits.size());
   for (int i = 0; i < nv; ++i) {
     const int vertex = vertexOf_[i];
-    for (int k = splits_.byVertexBegin[vertex]; k < splits_.byVertexBegin[vertex + 1]; ++k) {
-      const AcuteSplit& sp = splits_.splits[splits_.byVertex[k]];
+    for (int k = splits.byVertexBegin[vertex]; k < splits.byVertexBegin[vertex + 1]; ++k) {
+      const AcuteSplit& sp = splits.splits[splits.byVertex[k]];
       farSplits_.push_back({slotOf_[mesh.vertex(sp.corner)], slotOf_[mesh.vertex(TriMesh::next(sp.corner))],
                             slotOf_[mesh.vertex(TriMesh::prev(sp.corner))], sp.lenXA, sp.lenXB, sp.lenXR, sp.lenAR,
                             sp.lenBR});
@@ -257,29 +260,33 @@ void FastMarcher::scatter(int v) {
     return kUniform ? 1.0 : (P_[x] + P_[s] + P_[t]) * (1.0 / 3.0);
   };
   // Triangles (v, a, b) around v: each offers a and b one candidate, the best of the edge
-  // update, the triangle update and the virtual triangle of an acute split.
+  // update, the triangle update and the virtual triangle of an acute split. A candidate starts
+  // at the neighbour's current value when the edge update does not beat it: only improvements
+  // matter, and the triangle solves then return early more often.
   const int first = starBegin_[v], last = starBegin_[v + 1];
   for (int k = first; k < last; ++k) {
-    const StarFace* f = star + k;
-    if (node[f->a].run != run_) {  // target a, third vertex b
-      Candidate best{uv + (kUniform ? f->lva : cost[k].edgeA), lv};
-      if (known(f->b)) offerTriangle<kUniform>(best, f->a, v, f->b, f->lva, f->lab, f->lvb, kUniform ? 1.0 : cost[k].face);
-      if (f->splitAtA >= 0) {  // obtuse at a: the virtual triangle a, v, R (v is B of that corner)
-        const AcuteSplit& sp = splits_.splits[f->splitAtA];
-        const int r = splitSlot_[f->splitAtA];
-        if (known(r)) offerTriangle<kUniform>(best, f->a, v, r, f->lva, sp.lenXR, sp.lenBR, meanP(f->a, v, r));
+    const StarFace f = star[k];
+    if (node[f.a].run != run_) {  // target a, third vertex b
+      const double ua = node[f.a].u;
+      Candidate best{uv + (kUniform ? f.lva : cost[k].edgeA), lv};
+      if (!(best.u < ua)) best.u = ua;
+      if (known(f.b)) offerTriangle<kUniform>(best, f.a, v, f.b, f.lva, f.lab, f.lvb, kUniform ? 1.0 : cost[k].face);
+      if (f.split >= 0 && (f.split & 1) == 0) {  // obtuse at a: the virtual triangle a, v, R (v is B of that corner)
+        const NearSplit& sp = nearSplits_[f.split >> 1];
+        if (known(sp.r)) offerTriangle<kUniform>(best, f.a, v, sp.r, f.lva, sp.lenXR, sp.lenBR, meanP(f.a, v, sp.r));
       }
-      if (best.u < node[f->a].u) push(f->a, best.u, best.label);
+      if (best.u < ua) push(f.a, best.u, best.label);
     }
-    if (node[f->b].run != run_) {  // target b, third vertex a
-      Candidate best{uv + (kUniform ? f->lvb : cost[k].edgeB), lv};
-      if (known(f->a)) offerTriangle<kUniform>(best, f->b, v, f->a, f->lvb, f->lab, f->lva, kUniform ? 1.0 : cost[k].face);
-      if (f->splitAtB >= 0) {  // obtuse at b: v is A of that corner
-        const AcuteSplit& sp = splits_.splits[f->splitAtB];
-        const int r = splitSlot_[f->splitAtB];
-        if (known(r)) offerTriangle<kUniform>(best, f->b, v, r, f->lvb, sp.lenXR, sp.lenAR, meanP(f->b, v, r));
+    if (node[f.b].run != run_) {  // target b, third vertex a
+      const double ub = node[f.b].u;
+      Candidate best{uv + (kUniform ? f.lvb : cost[k].edgeB), lv};
+      if (!(best.u < ub)) best.u = ub;
+      if (known(f.a)) offerTriangle<kUniform>(best, f.b, v, f.a, f.lvb, f.lab, f.lva, kUniform ? 1.0 : cost[k].face);
+      if (f.split >= 0 && (f.split & 1) == 1) {  // obtuse at b: v is A of that corner
+        const NearSplit& sp = nearSplits_[f.split >> 1];
+        if (known(sp.r)) offerTriangle<kUniform>(best, f.b, v, sp.r, f.lvb, sp.lenXR, sp.lenAR, meanP(f.b, v, sp.r));
       }
-      if (best.u < node[f->b].u) push(f->b, best.u, best.label);
+      if (best.u < ub) push(f.b, best.u, best.label);
     }
   }
   // v as the far vertex R of acute splits: the virtual triangles X, A, R and X, B, R.

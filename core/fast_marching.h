@@ -90,7 +90,6 @@ class FastMarcher {
   /// run, the improved ones for an incremental run.
   const std::vector<int>& acceptedOrder() const { return acceptedVertices_; }
   const TriMesh& mesh() const { return mesh_; }
-  const AcuteSplits& acuteSplits() const { return splits_; }
 
  private:
   struct Candidate {  // the best update found so far for one vertex
@@ -123,13 +122,19 @@ class FastMarcher {
 
   /// A face (v, a, b) around v, as the hot loop reads it: contiguous per vertex.
   struct StarFace {
-    int a, b;                  ///< the other vertices, in face order
-    int splitAtA, splitAtB;    ///< acute split of the corner at a / b in this face, or -1
-    double lva, lvb, lab;      ///< edge lengths
+    int a, b;  ///< the other vertices (slots), in face order
+    /// The obtuse corner of this face, if it is at a or b and has an acute split i: 2 i if at a,
+    /// 2 i + 1 if at b; -1 otherwise. (A triangle has at most one obtuse corner.)
+    int split;
+    double lva, lvb, lab;  ///< edge lengths
+  };
+  /// Per acute split, what a star face needs: the far vertex R (slot) and the unfolded lengths.
+  struct NearSplit {
+    int r;
+    double lenXR, lenAR, lenBR;
   };
 
   const TriMesh& mesh_;
-  AcuteSplits splits_;
   bool uniform_;
   std::vector<double> P_;           ///< per slot; all ones for a uniform metric
   // The hot loop works on slots: vertices renumbered in breadth-first order for memory
@@ -145,7 +150,7 @@ class FastMarcher {
     double face;          ///< (P_v + P_a + P_b) / 3
   };
   std::vector<StarCost> starCost_;
-  std::vector<int> splitSlot_;      ///< per acute split, the slot of its far vertex R
+  std::vector<NearSplit> nearSplits_;  ///< per acute split
   /// The acute splits whose far vertex R is a given slot, in slot order (CSR), with the slots of
   /// X, A, B and the lengths copied in: the loop over them reads one contiguous record each.
   struct FarSplit {

@@ -6,14 +6,59 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <random>
 #include <set>
 
 #include "core/farthest_point_sampling.h"
+#include "core/farthest_queue.h"
 #include "core/fast_marching.h"
 #include "tests/test_support.h"
 
 namespace gr {
 namespace {
+
+// The bucket queue against a full scan, through a long run of decreasing updates: values over
+// many octaves, below the floor, exact ties, zeros (taken samples), and enough updates to
+// trigger its compaction several times.
+TEST(FarthestQueue, TopIsTheLargestValueLowestIndexFirst) {
+  const int n = 2000;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<double> U(n);
+  for (double& u : U) u = std::ldexp(unit(rng), -static_cast<int>(30 * unit(rng)));  // 1 .. 1e-9
+  U[17] = U[1234] = 2.0;                                                             // a tie on top
+  FarthestQueue queue(U, 1e-6);
+  for (int v = 0; v < n; ++v) queue.update(v);
+  const auto scan = [&U] {
+    int best = 0;
+    for (int v = 1; v < static_cast<int>(U.size()); ++v)
+      if (U[v] > U[best]) best = v;  // strict: the lowest index among equals
+    return best;
+  };
+  int checked = 0;
+  for (int step = 0; step < 60000; ++step) {
+    if (step % 7 == 0) {  // take the top, as sampling does: its value drops to 0
+      const int top = queue.top();
+      ASSERT_EQ(top, scan()) << "step " << step;
+      ++checked;
+      U[top] = 0.0;
+      queue.update(top);
+    }
+    // A front lowers some value: by a random factor, or to another vertex's value (ties).
+    const int v = static_cast<int>(rng() % n);
+    U[v] = step % 5 == 0 ? std::min(U[v], U[rng() % n]) : U[v] * unit(rng);
+    queue.update(v);
+  }
+  EXPECT_GT(checked, 8000);
+  // All values at 0: the top has U = 0, as sampling sees when every vertex is a sample.
+  for (int v = 0; v < n; ++v) {
+    U[v] = 0.0;
+    queue.update(v);
+  }
+  const int top = queue.top();
+  ASSERT_GE(top, 0);
+  EXPECT_EQ(U[top], 0.0);
+}
 
 TEST(FarthestPointSampling, EachSampleIsTheFarthestVertexFromTheEarlierOnes) {
   const TriMesh m = test::loadRealMesh("fandisk.off");

@@ -27,6 +27,13 @@ Vec3 SurfacePoint::position(const TriMesh& mesh) const {
 FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh), uniform_(metric.isUniform()) {
   const int nv = mesh.vertexCount();
   const AcuteSplits splits = findAcuteSplits(mesh);
+  // The other two vertices of each corner, in the order of the vertex -> corners lists: the
+  // passes below read a vertex's neighbours contiguously instead of one triangle per corner.
+  std::vector<std::array<int, 2>> others(mesh.vertexCorners.size());
+  for (size_t k = 0; k < others.size(); ++k) {
+    const int c = mesh.vertexCorners[k];
+    others[k] = {mesh.vertex(TriMesh::next(c)), mesh.vertex(TriMesh::prev(c))};
+  }
   // Slots: the vertices in breadth-first order, so a front touches nearby memory.
   slotOf_.assign(nv, -1);
   vertexOf_.reserve(nv);
@@ -36,8 +43,8 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh
     vertexOf_.push_back(root);
     for (size_t next = vertexOf_.size() - 1; next < vertexOf_.size(); ++next) {
       const int v = vertexOf_[next];
-      for (const int* c = mesh.cornersBegin(v); c != mesh.cornersEnd(v); ++c)
-        for (int w : {mesh.vertex(TriMesh::next(*c)), mesh.vertex(TriMesh::prev(*c))})
+      for (int k = mesh.vertexCornerBegin[v]; k < mesh.vertexCornerBegin[v + 1]; ++k)
+        for (int w : others[k])
           if (slotOf_[w] < 0) {
             slotOf_[w] = static_cast<int>(vertexOf_.size());
             vertexOf_.push_back(w);
@@ -55,11 +62,12 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh
   star_.resize(mesh.vertexCorners.size());
   for (int i = 0; i < nv; ++i) {
     StarFace* f = star_.data() + starBegin_[i];
-    for (const int* it = mesh.cornersBegin(vertexOf_[i]); it != mesh.cornersEnd(vertexOf_[i]); ++it, ++f) {
-      const int c = *it;
+    const int v = vertexOf_[i];
+    for (int k = mesh.vertexCornerBegin[v]; k < mesh.vertexCornerBegin[v + 1]; ++k, ++f) {
+      const int c = mesh.vertexCorners[k];
       const int cn = TriMesh::next(c), cp = TriMesh::prev(c);
-      f->a = slotOf_[mesh.vertex(cn)];
-      f->b = slotOf_[mesh.vertex(cp)];
+      f->a = slotOf_[others[k][0]];
+      f->b = slotOf_[others[k][1]];
       f->lva = length[cp];
       f->lvb = length[cn];
       f->lab = length[c];

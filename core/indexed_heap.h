@@ -1,8 +1,7 @@
 // IndexedHeap: a binary min-heap of vertices keyed by distance, with decrease-key.
 //
 // Each vertex is in the heap at most once (its position is tracked), so fast marching pops no
-// stale entries; set() also moves a key up, for heaps whose keys change both ways (farthest-point
-// sampling keys vertices by -U). Memory: one int per vertex plus the entries in the heap.
+// stale entries. Memory: one int per vertex plus the entries in the heap.
 #pragma once
 
 #include <vector>
@@ -34,17 +33,6 @@ class IndexedHeap {
       return;
     }
     siftUp(i);
-  }
-
-  /// Inserts v with `key`, or moves it to `key` whichever way that is.
-  void set(int v, double key) {
-    const int i = pos_[v];
-    if (i < 0 || key < heap_[i].key) {
-      pushOrDecrease(v, key);
-    } else if (key > heap_[i].key) {
-      heap_[i].key = key;
-      siftDown(i);
-    }
   }
 
   /// Removes and returns the vertex with the smallest key.

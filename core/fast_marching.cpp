@@ -27,13 +27,7 @@ Vec3 SurfacePoint::position(const TriMesh& mesh) const {
 FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh), uniform_(metric.isUniform()) {
   const int nv = mesh.vertexCount();
   const AcuteSplits splits = findAcuteSplits(mesh);
-  // The other two vertices of each corner, in the order of the vertex -> corners lists: the
-  // passes below read a vertex's neighbours contiguously instead of one triangle per corner.
-  std::vector<std::array<int, 2>> others(mesh.vertexCorners.size());
-  for (size_t k = 0; k < others.size(); ++k) {
-    const int c = mesh.vertexCorners[k];
-    others[k] = {mesh.vertex(TriMesh::next(c)), mesh.vertex(TriMesh::prev(c))};
-  }
+  const std::vector<std::array<int, 2>> others = starNeighbours(mesh);  // read contiguously below
   // Slots: the vertices in breadth-first order, so a front touches nearby memory.
   slotOf_.assign(nv, -1);
   vertexOf_.reserve(nv);

@@ -68,12 +68,7 @@ void rebuildVertexCorners(TriMesh& m) {
   for (int c = 0; c < 3 * m.faceCount(); ++c) m.vertexCorners[fill[m.vertex(c)]++] = c;
 }
 
-namespace {
-
-/// Per entry of the vertex -> corners lists, the corner's two other vertices, {vertex(next),
-/// vertex(prev)}: the scans below then read each vertex's star contiguously instead of one
-/// triangle per corner (random reads that dominated on large meshes).
-std::vector<std::array<int, 2>> starOthers(const TriMesh& m) {
+std::vector<std::array<int, 2>> starNeighbours(const TriMesh& m) {
   std::vector<std::array<int, 2>> others(m.vertexCorners.size());
   for (size_t k = 0; k < others.size(); ++k) {
     const int c = m.vertexCorners[k];
@@ -81,6 +76,8 @@ std::vector<std::array<int, 2>> starOthers(const TriMesh& m) {
   }
   return others;
 }
+
+namespace {
 
 /// For each corner, finds the face across its opposite edge {p, q} among the corners of p, the
 /// smaller endpoint: O(sum of valence^2), no hash map.
@@ -242,7 +239,7 @@ Expected<TriMesh> buildTriMesh(std::vector<Vec3> positions, std::vector<Tri> tri
   m.positions = std::move(positions);
   m.triangles = std::move(triangles);
   rebuildVertexCorners(m);
-  const std::vector<std::array<int, 2>> others = starOthers(m);
+  const std::vector<std::array<int, 2>> others = starNeighbours(m);
   buildOppositeCorners(m, others);
   countTopology(m, others);
   return m;

@@ -89,6 +89,11 @@ Expected<TriMesh> buildTriMesh(std::vector<Vec3> positions, std::vector<Tri> tri
 /// changed in place with oppositeCorner kept up to date and the topology unchanged (edge flips).
 void rebuildVertexCorners(TriMesh& mesh);
 
+/// Per entry k of the vertex -> corners lists (vertexCorners[k] = corner c at vertex v), the
+/// corner's other two vertices {vertex(next(c)), vertex(prev(c))}: a vertex's neighbours read
+/// contiguously instead of through one triangle per corner (random reads on large meshes).
+std::vector<std::array<int, 2>> starNeighbours(const TriMesh& mesh);
+
 /// Faces whose vertices lie in the given component.
 std::vector<int> facesOfComponent(const TriMesh& mesh, int component);
 

@@ -12,9 +12,8 @@ namespace {
 
 /// Rings of faces beyond the source's own faces initialised by unfolding (seedByUnfolding). A
 /// point inside a face needs a few rings before the triangle updates become causal; a vertex
-/// source needs only the ring across its star's outer edges.
+/// source needs only the ring across its star's outer edges (addSource(int) seeds it directly).
 constexpr int kSeedDepthFace = 3;
-constexpr int kSeedDepthVertex = 1;
 
 }  // namespace
 
@@ -137,17 +136,28 @@ Status FastMarcher::addSource(int v, int label) {
                         std::to_string(mesh_.vertexCount()) + " vertices)");
   beginRun();
   if (node_[slotOf_[v]].u <= 0.0) return Status::ok();
-  push(slotOf_[v], 0.0, label);
-  // Each incident face in its own plane, v at the origin.
-  for (const int* it = mesh_.cornersBegin(v); it != mesh_.cornersEnd(v); ++it) {
-    const int c = *it;
-    std::array<Vec2, 3> layout;
-    const double la = cornerEdgeLength(TriMesh::prev(c)), lb = cornerEdgeLength(TriMesh::next(c)), lc = cornerEdgeLength(c);
-    layout[c % 3] = Vec2(0.0, 0.0);
-    layout[TriMesh::next(c) % 3] = Vec2(la, 0.0);
-    const double x = la > 0.0 ? (la * la + lb * lb - lc * lc) / (2.0 * la) : 0.0;
-    layout[TriMesh::prev(c) % 3] = Vec2(x, std::sqrt(std::max(0.0, lb * lb - x * x)));
-    seedByUnfolding(Vec2(0.0, 0.0), P_[slotOf_[v]], TriMesh::face(c), layout, -1, kSeedDepthVertex, label);
+  const int sv = slotOf_[v];
+  push(sv, 0.0, label);
+  // The faces around v, v at the origin, read from its star records: their vertices get the
+  // edge lengths; the vertex across each outer edge gets the straight line from v in the
+  // unfolding when that line crosses the edge (what seedByUnfolding does one ring deep, without
+  // revisiting each face from its neighbours).
+  const double pv = P_[sv];
+  const StarFace* f = star_.data() + starBegin_[sv];
+  for (const int* it = mesh_.cornersBegin(v); it != mesh_.cornersEnd(v); ++it, ++f) {
+    relax(f->a, 0.5 * (pv + P_[f->a]) * f->lva, label);
+    relax(f->b, 0.5 * (pv + P_[f->b]) * f->lvb, label);
+    const int o = mesh_.oppositeCorner[*it];
+    if (o < 0 || !(f->lva > 0.0)) continue;
+    const Vec2 a(f->lva, 0.0);
+    const double x = (f->lva * f->lva + f->lvb * f->lvb - f->lab * f->lab) / (2.0 * f->lva);
+    const Vec2 b(x, std::sqrt(std::max(0.0, f->lvb * f->lvb - x * x)));
+    if ((b - a).squaredNorm() <= 0.0) continue;
+    const int r = mesh_.vertex(o);
+    const Vec3& pr = mesh_.positions[r];
+    const Vec2 q = unfold(a, b, Vec2(0.0, 0.0), (pr - mesh_.positions[vertexOf_[f->a]]).norm(),
+                          (pr - mesh_.positions[vertexOf_[f->b]]).norm());
+    if (segmentsIntersect(Vec2(0.0, 0.0), q, a, b)) relax(slotOf_[r], 0.5 * (pv + P_[slotOf_[r]]) * q.norm(), label);
   }
   return Status::ok();
 }

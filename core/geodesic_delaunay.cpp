@@ -24,15 +24,25 @@ struct Dual {
 Dual buildDual(const TriMesh& mesh, const std::vector<int>& label, int cellCount) {
   // Faces with three labels, keyed by their sorted label triple, sorted so a triple met twice
   // (three cells meeting twice) sits next to its twin.
-  std::vector<std::pair<std::array<int, 3>, int>> keyed;  // (sorted labels, face)
+  using Keyed = std::pair<std::array<int, 3>, int>;  // (sorted labels, face)
+  std::vector<Keyed> found;
+  std::vector<int> bucketBegin(cellCount + 1, 0);  // counting sort on the smallest label
   for (int f = 0; f < mesh.faceCount(); ++f) {
     const Tri& t = mesh.triangles[f];
     std::array<int, 3> key = {label[t[0]], label[t[1]], label[t[2]]};
     if (key[0] == key[1] || key[1] == key[2] || key[2] == key[0]) continue;
     std::sort(key.begin(), key.end());
-    keyed.push_back({key, f});
+    found.push_back({key, f});
+    ++bucketBegin[key[0] + 1];
   }
-  std::sort(keyed.begin(), keyed.end());
+  for (int c = 0; c < cellCount; ++c) bucketBegin[c + 1] += bucketBegin[c];
+  std::vector<Keyed> keyed(found.size());
+  {
+    std::vector<int> fill(bucketBegin.begin(), bucketBegin.end() - 1);
+    for (const Keyed& k : found) keyed[fill[k.first[0]]++] = k;
+  }
+  // Each bucket holds the few faces around one cell's Voronoi vertices: sorted in place.
+  for (int c = 0; c < cellCount; ++c) std::sort(keyed.begin() + bucketBegin[c], keyed.begin() + bucketBegin[c + 1]);
   Dual d;
   std::vector<char> bad(cellCount, 0);
   for (size_t a = 0; a < keyed.size();) {

@@ -65,15 +65,17 @@ AcuteSplits findAcuteSplits(const TriMesh& mesh, int maxUnfoldings) {
   const int nc = 3 * mesh.faceCount();
   s.splitOfCorner.assign(nc, -1);
   AcuteSplit split;
-  for (int c = 0; c < nc; ++c) {
-    const Vec3& px = mesh.positions[mesh.vertex(c)];
-    const Vec3 ea = mesh.positions[mesh.vertex(TriMesh::next(c))] - px;
-    const Vec3 eb = mesh.positions[mesh.vertex(TriMesh::prev(c))] - px;
-    if (ea.dot(eb) >= 0.0) continue;
-    ++s.obtuseCorners;
-    if (findSplit(mesh, c, maxUnfoldings, split)) {
-      s.splitOfCorner[c] = static_cast<int>(s.splits.size());
-      s.splits.push_back(split);
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {  // corner 3f + k: obtuse if its two edges point apart
+      const Vec3& px = mesh.positions[t[k]];
+      if ((mesh.positions[t[(k + 1) % 3]] - px).dot(mesh.positions[t[(k + 2) % 3]] - px) >= 0.0) continue;
+      const int c = 3 * f + k;
+      ++s.obtuseCorners;
+      if (findSplit(mesh, c, maxUnfoldings, split)) {
+        s.splitOfCorner[c] = static_cast<int>(s.splits.size());
+        s.splits.push_back(split);
+      }
     }
   }
   s.byVertexBegin.assign(mesh.vertexCount() + 1, 0);

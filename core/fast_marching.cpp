@@ -49,7 +49,13 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh
     for (int i = 0; i < nv; ++i) P_[i] = metric.P[vertexOf_[i]];
   // Edge lengths once per corner (the edge it faces), then the star of each slot, contiguous.
   std::vector<double> length(3 * static_cast<size_t>(mesh.faceCount()));
-  for (int c = 0; c < 3 * mesh.faceCount(); ++c) length[c] = cornerEdgeLength(c);
+  for (int f = 0; f < mesh.faceCount(); ++f) {  // as cornerEdgeLength, one face read per face
+    const Tri& t = mesh.triangles[f];
+    const Vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]], &p2 = mesh.positions[t[2]];
+    length[3 * f] = (p1 - p2).norm();
+    length[3 * f + 1] = (p2 - p0).norm();
+    length[3 * f + 2] = (p0 - p1).norm();
+  }
   starBegin_.assign(nv + 1, 0);
   for (int i = 0; i < nv; ++i) starBegin_[i + 1] = starBegin_[i] + mesh.valence(vertexOf_[i]);
   star_.resize(mesh.vertexCorners.size());

@@ -78,6 +78,8 @@ DelaunayFlipResult flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& param
     const int x = V(c), a = V(TriMesh::next(c)), b = V(TriMesh::prev(c)), y = V(o);
     if (x == y) continue;
     const Vec3 &px = pos[x], &pa = pos[a], &pb = pos[b], &py = pos[y];
+    // Two acute facing angles sum to less than pi: locally Delaunay without the arc tangents.
+    if (tolerance >= 0.0 && (pa - px).dot(pb - px) > 0.0 && (pb - py).dot(pa - py) > 0.0) continue;
     const double facing = angleAt(px, pa, pb) + angleAt(py, pb, pa);
     if (facing <= M_PI + tolerance) continue;  // locally Delaunay
     if (isNeighbour(mesh, c, y)) continue;  // (x, y) is already an edge

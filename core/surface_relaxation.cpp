@@ -48,9 +48,10 @@ Vec3 closestBary(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
 /// The input surface as the walks see it: faces, and which edges they may not cross.
 class SurfaceWalker {
  public:
-  // Everything is computed where the walks go: the cost follows the output, not the input.
+  // Everything is computed where the walks go: the cost follows the output, not the input
+  // (apart from one byte per input corner for the blocked-edge cache).
   SurfaceWalker(const TriMesh& mesh, double featureAngleDegrees)
-      : mesh_(mesh), cosFeature_(std::cos(featureAngleDegrees * kDegree)) {}
+      : mesh_(mesh), cosFeature_(std::cos(featureAngleDegrees * kDegree)), blocked_(3 * size_t(mesh.faceCount()), -1) {}
 
   /// Unit normal of an input face (zero for a degenerate face).
   Vec3 normal(int face) const {
@@ -62,10 +63,9 @@ class SurfaceWalker {
   /// Whether the edge facing `corner` may not be crossed: a boundary, a crease sharper than the
   /// feature angle, or an edge of a degenerate face.
   bool blocked(int corner) const {
-    const int o = mesh_.oppositeCorner[corner];
-    if (o < 0) return true;
-    const Vec3 a = areaNormal(TriMesh::face(corner)), b = areaNormal(TriMesh::face(o));
-    return !(a.dot(b) > cosFeature_ * std::sqrt(a.squaredNorm() * b.squaredNorm()));  // also if degenerate
+    signed char& known = blocked_[corner];  // computed once per corner the walks reach
+    if (known < 0) known = computeBlocked(corner);
+    return known;
   }
 
   /// Whether input vertex v has a blocked edge (a crease, corner or boundary vertex).
@@ -146,8 +146,16 @@ class SurfaceWalker {
     }
   }
 
+  bool computeBlocked(int corner) const {
+    const int o = mesh_.oppositeCorner[corner];
+    if (o < 0) return true;
+    const Vec3 a = areaNormal(TriMesh::face(corner)), b = areaNormal(TriMesh::face(o));
+    return !(a.dot(b) > cosFeature_ * std::sqrt(a.squaredNorm() * b.squaredNorm()));  // also if degenerate
+  }
+
   const TriMesh& mesh_;
   double cosFeature_;
+  mutable std::vector<signed char> blocked_;  ///< per input corner: -1 not computed yet, else 0 / 1
 
   /// Cross product of two edges of the face: normal times twice the area.
   Vec3 areaNormal(int face) const {

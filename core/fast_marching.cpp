@@ -155,9 +155,7 @@ Status FastMarcher::addSource(int v, int label) {
     relax(f->b, 0.5 * (pv + P_[f->b]) * f->lvb, label);
     const int o = mesh_.oppositeCorner[*it];
     if (o < 0 || !(f->lva > 0.0)) continue;
-    const Vec2 a(f->lva, 0.0);
-    const double x = (f->lva * f->lva + f->lvb * f->lvb - f->lab * f->lab) / (2.0 * f->lva);
-    const Vec2 b(x, std::sqrt(std::max(0.0, f->lvb * f->lvb - x * x)));
+    const Vec2 a(f->lva, 0.0), b = layoutThirdVertex(f->lva, f->lvb, f->lab);
     if ((b - a).squaredNorm() <= 0.0) continue;
     const int r = mesh_.vertex(o);
     const Vec3& pr = mesh_.positions[r];
@@ -220,9 +218,7 @@ Status FastMarcher::addSource(const SurfacePoint& point, int label) {
   const double pAtPoint = b[0] * P_[slotOf_[t[0]]] + b[1] * P_[slotOf_[t[1]]] + b[2] * P_[slotOf_[t[2]]];
   // The face in its plane: t[0] at the origin, t[1] on the x axis.
   const double l01 = cornerEdgeLength(3 * f + 2), l02 = cornerEdgeLength(3 * f + 1), l12 = cornerEdgeLength(3 * f);
-  const double x = l01 > 0.0 ? (l01 * l01 + l02 * l02 - l12 * l12) / (2.0 * l01) : 0.0;
-  const std::array<Vec2, 3> layout = {Vec2(0.0, 0.0), Vec2(l01, 0.0),
-                                      Vec2(x, std::sqrt(std::max(0.0, l02 * l02 - x * x)))};
+  const std::array<Vec2, 3> layout = {Vec2(0.0, 0.0), Vec2(l01, 0.0), layoutThirdVertex(l01, l02, l12)};
   const Vec2 p = b[0] * layout[0] + b[1] * layout[1] + b[2] * layout[2];
   seedByUnfolding(p, pAtPoint, f, layout, -1, kSeedDepthFace, label);
   return Status::ok();

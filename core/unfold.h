@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 
 namespace gr {
@@ -11,6 +12,13 @@ namespace gr {
 using Vec2 = Eigen::Vector2d;
 
 inline double cross2(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
+
+/// A triangle P0 P1 P2 laid out in its plane from its edge lengths: P0 at the origin, P1 at
+/// (l01, 0); returns P2 (above the x axis). A zero l01 puts P2 on the y axis.
+inline Vec2 layoutThirdVertex(double l01, double l02, double l12) {
+  const double x = l01 > 0.0 ? (l01 * l01 + l02 * l02 - l12 * l12) / (2.0 * l01) : 0.0;
+  return Vec2(x, std::sqrt(std::max(0.0, l02 * l02 - x * x)));
+}
 
 /// Position of R in the plane, given the edge (p, q) and the lengths |PR|, |QR|, on the side of
 /// the line pq opposite to the point t (the third vertex of the triangle already laid out).

@@ -147,21 +147,32 @@ Status FastMarcher::addSource(int v, int label) {
   // The faces around v, v at the origin, read from its star records: their vertices get the
   // edge lengths; the vertex across each outer edge gets the straight line from v in the
   // unfolding when that line crosses the edge (what seedByUnfolding does one ring deep, without
-  // revisiting each face from its neighbours).
+  // revisiting each face from its neighbours). The face across edge ab is found in a's star,
+  // which the breadth-first slots keep near v's: no read of the mesh's own arrays.
   const double pv = P_[sv];
-  const StarFace* f = star_.data() + starBegin_[sv];
-  for (const int* it = mesh_.cornersBegin(v); it != mesh_.cornersEnd(v); ++it, ++f) {
+  const StarFace* const first = star_.data() + starBegin_[sv];
+  const StarFace* const last = star_.data() + starBegin_[sv + 1];
+  for (const StarFace* f = first; f != last; ++f) {
     relax(f->a, 0.5 * (pv + P_[f->a]) * f->lva, label);
     relax(f->b, 0.5 * (pv + P_[f->b]) * f->lvb, label);
-    const int o = mesh_.oppositeCorner[*it];
-    if (o < 0 || !(f->lva > 0.0)) continue;
+    if (!(f->lva > 0.0)) continue;
+    int r = -1;
+    double lar = 0.0, lbr = 0.0;
+    for (const StarFace *g = star_.data() + starBegin_[f->a], *end = star_.data() + starBegin_[f->a + 1]; g != end; ++g) {
+      if (g->b == f->b && g->a != sv) {  // face (a, R, b): the orientation of v's face
+        r = g->a, lar = g->lva, lbr = g->lab;
+        break;
+      }
+      if (g->a == f->b && g->b != sv) {  // face (a, b, R): a mesh without a consistent orientation
+        r = g->b, lar = g->lvb, lbr = g->lab;
+        break;
+      }
+    }
+    if (r < 0) continue;  // ab is a boundary edge
     const Vec2 a(f->lva, 0.0), b = layoutThirdVertex(f->lva, f->lvb, f->lab);
     if ((b - a).squaredNorm() <= 0.0) continue;
-    const int r = mesh_.vertex(o);
-    const Vec3& pr = mesh_.positions[r];
-    const Vec2 q = unfold(a, b, Vec2(0.0, 0.0), (pr - mesh_.positions[vertexOf_[f->a]]).norm(),
-                          (pr - mesh_.positions[vertexOf_[f->b]]).norm());
-    if (segmentsIntersect(Vec2(0.0, 0.0), q, a, b)) relax(slotOf_[r], 0.5 * (pv + P_[slotOf_[r]]) * q.norm(), label);
+    const Vec2 q = unfold(a, b, Vec2(0.0, 0.0), lar, lbr);
+    if (segmentsIntersect(Vec2(0.0, 0.0), q, a, b)) relax(r, 0.5 * (pv + P_[r]) * q.norm(), label);
   }
   return Status::ok();
 }

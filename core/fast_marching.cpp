@@ -47,31 +47,28 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh
   P_.assign(nv, 1.0);
   if (!metric.isUniform())
     for (int i = 0; i < nv; ++i) P_[i] = metric.P[vertexOf_[i]];
-  // Edge lengths once per corner (the edge it faces), then the star of each slot, contiguous.
-  std::vector<double> length(3 * static_cast<size_t>(mesh.faceCount()));
-  for (int f = 0; f < mesh.faceCount(); ++f) {  // as cornerEdgeLength, one face read per face
-    const Tri& t = mesh.triangles[f];
-    const Vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]], &p2 = mesh.positions[t[2]];
-    length[3 * f] = (p1 - p2).norm();
-    length[3 * f + 1] = (p2 - p0).norm();
-    length[3 * f + 2] = (p0 - p1).norm();
-  }
+  // The star of each slot, contiguous, filled one face at a time: the face's three edge lengths
+  // are computed once and written into the records of its three corners. A vertex's records
+  // come in increasing face order, the order of its corners in the mesh.
   starBegin_.assign(nv + 1, 0);
   for (int i = 0; i < nv; ++i) starBegin_[i + 1] = starBegin_[i] + mesh.valence(vertexOf_[i]);
   star_.resize(mesh.vertexCorners.size());
-  for (int i = 0; i < nv; ++i) {
-    StarFace* f = star_.data() + starBegin_[i];
-    const int v = vertexOf_[i];
-    for (int k = mesh.vertexCornerBegin[v]; k < mesh.vertexCornerBegin[v + 1]; ++k, ++f) {
-      const int c = mesh.vertexCorners[k];
-      const int cn = TriMesh::next(c), cp = TriMesh::prev(c);
-      f->a = slotOf_[others[k][0]];
-      f->b = slotOf_[others[k][1]];
-      f->lva = length[cp];
-      f->lvb = length[cn];
-      f->lab = length[c];
-      const int atA = splits.splitOfCorner[cn], atB = splits.splitOfCorner[cp];
-      f->split = atA >= 0 ? 2 * atA : atB >= 0 ? 2 * atB + 1 : -1;
+  std::vector<int> fill(starBegin_.begin(), starBegin_.end() - 1);
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    const Vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]], &p2 = mesh.positions[t[2]];
+    const double length[3] = {(p1 - p2).norm(), (p2 - p0).norm(), (p0 - p1).norm()};  // facing each corner
+    const int slot[3] = {slotOf_[t[0]], slotOf_[t[1]], slotOf_[t[2]]};
+    const int* const splitOf = splits.splitOfCorner.data() + 3 * f;
+    for (int k = 0; k < 3; ++k) {
+      const int kn = (k + 1) % 3, kp = (k + 2) % 3;
+      StarFace& r = star_[fill[slot[k]]++];
+      r.a = slot[kn];
+      r.b = slot[kp];
+      r.lva = length[kp];
+      r.lvb = length[kn];
+      r.lab = length[k];
+      r.split = splitOf[kn] >= 0 ? 2 * splitOf[kn] : splitOf[kp] >= 0 ? 2 * splitOf[kp] + 1 : -1;
     }
   }
   if (!uniform_) {

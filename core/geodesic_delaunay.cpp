@@ -119,6 +119,24 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
 
   DelaunayResult r;
   const int initialCount = static_cast<int>(samples.size());
+  // A component the samples do not reach (fewer samples than components) gets one at its lowest
+  // vertex, as the sampling gives each component its first: counted as added by the repair.
+  {
+    std::vector<char> reached(mesh.topology.components, 0);
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+      if (marcher.label()[v] >= 0 && mesh.topology.componentOfVertex[v] >= 0) reached[mesh.topology.componentOfVertex[v]] = 1;
+    bool added = false;
+    for (int v = 0; v < mesh.vertexCount(); ++v) {
+      const int c = mesh.topology.componentOfVertex[v];
+      if (c < 0 || reached[c]) continue;
+      reached[c] = 1;
+      samples.push_back(SurfacePoint::atVertex(v));
+      if (Status s = marcher.addSource(v, static_cast<int>(samples.size()) - 1); !s) return s;
+      added = true;
+    }
+    if (added)
+      if (Status s = marcher.propagate(); !s) return s;
+  }
   for (int round = 0;; ++round) {
     const std::vector<int>& label = marcher.label();
     const int cells = static_cast<int>(samples.size());
@@ -186,7 +204,8 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
           if (out->valence(v) == 0 && cellSize[v] > 0) bad.push_back(v);
         if (bad.empty()) {
           std::vector<double> far(cells, 0.0);
-          for (int v = 0; v < mesh.vertexCount(); ++v) far[label[v]] = std::max(far[label[v]], marcher.distance()[v]);
+          for (int v = 0; v < mesh.vertexCount(); ++v)
+            if (label[v] >= 0) far[label[v]] = std::max(far[label[v]], marcher.distance()[v]);
           std::vector<int> order(cells);
           for (int c = 0; c < cells; ++c) order[c] = c;
           std::sort(order.begin(), order.end(), [&](int a, int b) { return far[a] > far[b]; });

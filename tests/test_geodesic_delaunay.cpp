@@ -127,6 +127,41 @@ TEST(Delaunay, TwoComponentsAtTenAndThirtyPercent) {
   }
 }
 
+// Fewer samples than components: the components the sampling could not reach get a sample each
+// from the repair (found by a stress run over the data set: b9_mesh.off, 47 components, at 20
+// samples read the cell of an unlabelled vertex at index -1 and corrupted the heap).
+TEST(Delaunay, FewerSamplesThanComponents) {
+  std::vector<Vec3> pos;
+  std::vector<Tri> tris;
+  const int spheres = 7;
+  for (int i = 0; i < spheres; ++i) {
+    const TriMesh s = test::icosphere(2, 0.5 + 0.1 * i);
+    const int base = static_cast<int>(pos.size());
+    for (const Vec3& p : s.positions) pos.push_back(p + Vec3(3.0 * i, 0.0, 0.0));
+    for (const Tri& t : s.triangles) tris.push_back({t[0] + base, t[1] + base, t[2] + base});
+  }
+  const TriMesh m = std::move(buildTriMesh(pos, tris)).value();
+  ASSERT_EQ(m.topology.components, spheres);
+  for (int target : {1, 3, 6}) {
+    FpsParams fps;
+    fps.targetCount = target;
+    const auto samples = farthestPointSampling(m, Metric::uniform(), fps);
+    ASSERT_TRUE(samples);
+    ASSERT_EQ(static_cast<int>(samples->samples.size()), target);
+    const auto r = geodesicDelaunay(m, Metric::uniform(), samples->samples);
+    ASSERT_TRUE(r) << r.status().message;
+    const Recount out = recount(r->mesh.triangles, r->mesh.vertexCount());
+    std::printf("%d spheres, %d samples: %d added -> %d vertices, %d components\n", spheres, target, r->addedSamples,
+                r->mesh.vertexCount(), out.components);
+    EXPECT_GE(r->addedSamples, spheres - target);
+    EXPECT_EQ(r->mesh.vertexCount(), target + r->addedSamples - r->droppedSamples);
+    EXPECT_TRUE(out.closedManifoldEdges && out.oriented && out.manifoldVertices);
+    EXPECT_EQ(out.components, spheres);
+    EXPECT_EQ(out.genusSum, 0);
+    EXPECT_EQ(out.isolated, 0);
+  }
+}
+
 // Straight boundaries put three samples in a row; the result must not keep them as a flat
 // (zero-area) triangle.
 TEST(Delaunay, NoFlatTrianglesAlongStraightBoundaries) {

@@ -89,6 +89,11 @@ Status checkInput(const TriMesh& mesh, const std::vector<SurfacePoint>& samples)
     return invalidInput("the mesh is not manifold (" + std::to_string(mesh.topology.nonManifoldEdges) +
                         " non-manifold edges, " + std::to_string(mesh.topology.nonManifoldVertices) +
                         " non-manifold vertices)");
+  // The dual's triangles take the orientation of the input faces they come from.
+  if (mesh.topology.inconsistentEdges > 0)
+    return invalidInput("the faces of the mesh are not oriented coherently (" +
+                        std::to_string(mesh.topology.inconsistentEdges) +
+                        " edges have two faces that disagree): orient them first (orientCoherently)");
   return Status::ok();
 }
 

@@ -56,7 +56,8 @@ struct DelaunayResult {
   std::vector<int> region;          ///< per input vertex, its output vertex (Voronoi cell)
 };
 
-/// Fails with InvalidInput (no samples, a sample out of range, a non-manifold mesh),
+/// Fails with InvalidInput (no samples, a sample out of range, a non-manifold mesh, faces not oriented
+/// coherently: see orientCoherently in tri_mesh.h),
 /// NotConverged (still invalid after maxRepairRounds) or Cancelled.
 Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> samples,
                                           const DelaunayParams& params = {}, Progress progress = {});

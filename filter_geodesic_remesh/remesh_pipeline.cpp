@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "core/evaluation.h"
@@ -80,11 +81,26 @@ Status remeshToNewLayer(MeshDocument& doc, const CurrentMesh& current, const Rem
   if (request.relaxation < 0 || request.relaxation > 100)
     return invalidInput("Relaxation must be 0 to 100 rounds, got " + std::to_string(request.relaxation));
 
+  // Faces that run against their neighbours' orientation: the output takes its orientation
+  // from the input's faces, so the work is done on a coherently oriented copy (same vertices,
+  // same faces, some with corners 1 and 2 swapped); the input layer is not changed.
+  std::vector<char> flipped;
+  std::optional<TriMesh> orientedCopy;
+  if (topology.inconsistentEdges > 0) {
+    Expected<TriMesh> oriented = orientCoherently(mesh, &flipped);
+    if (!oriented) return oriented.status();
+    orientedCopy = std::move(oriented).value();
+    ctx.log(std::to_string(std::count(flipped.begin(), flipped.end(), 1)) + " of the " +
+            std::to_string(mesh.faceCount()) + " faces run against their neighbours' orientation (" +
+            std::to_string(topology.inconsistentEdges) +
+            " edges): the remeshing uses a coherently oriented copy; the input layer is not changed");
+  }
+  const TriMesh& surface = orientedCopy ? *orientedCopy : mesh;
   // The mesh the fronts run on: the input, or its midpoint subdivision (same surface).
-  Expected<Subdivision> fine = subdivideMidpoint(mesh, refinement);
+  Expected<Subdivision> fine = subdivideMidpoint(surface, refinement);
   if (!fine) return fine.status();
   // One engine for both stages: the triangulation starts from the sampling's Voronoi diagram.
-  const Metric metric = metricOnSubdivision(request.metric, mesh, *fine);
+  const Metric metric = metricOnSubdivision(request.metric, surface, *fine);
   FastMarcher marcher(fine->mesh, metric);
   RemeshParams params;
   params.sampling = request.sampling;
@@ -106,7 +122,10 @@ Status remeshToNewLayer(MeshDocument& doc, const CurrentMesh& current, const Rem
   if (copyColor) out->updateDataMask(MeshModel::MM_VERTCOLOR);
   if (copyQuality) out->updateDataMask(MeshModel::MM_VERTQUALITY);
   std::vector<SurfacePoint> origin(result.samplePoint.size());
-  for (size_t i = 0; i < origin.size(); ++i) origin[i] = fine->toOriginal(mesh, result.samplePoint[i]);
+  for (size_t i = 0; i < origin.size(); ++i) {
+    origin[i] = fine->toOriginal(surface, result.samplePoint[i]);
+    if (origin[i].face >= 0 && !flipped.empty() && flipped[origin[i].face]) std::swap(origin[i].bary[1], origin[i].bary[2]);
+  }
   adapters::writeMesh(result.mesh, out->cm, m, view, origin, copyColor, copyQuality);
   if (request.labelInput) {  // the input's vertices keep their indices in the subdivision
     const std::vector<int> region(result.region.begin(), result.region.begin() + mesh.vertexCount());

@@ -351,6 +351,56 @@ TEST_F(FilterInProcess, UniformRemeshBadInputLeavesTheDocumentAlone) {
   EXPECT_EQ(doc.meshList.size(), 3) << "a failed filter added a layer";
 }
 
+// An input whose faces are not oriented coherently (blobby-shuffled.off: 3,069 edges whose two
+// faces disagree) is remeshed on an oriented copy: a valid, oriented output, the input layer
+// untouched. With Refinement the samples lie inside faces, some of them flipped in the copy: the
+// quality q = x interpolated there must still be exact (the barycentric coordinates map back).
+TEST_F(FilterInProcess, UniformRemeshOrientsAnIncoherentInput) {
+  use("Remeshing: Geodesic Uniform");
+  const TriMesh blobby = test::loadRealMesh("blobby-shuffled.off");
+  ASSERT_GT(blobby.topology.inconsistentEdges, 0);
+  MeshModel* mm = addMesh(doc, blobby.positions, blobby.triangles);
+  for (auto& v : mm->cm.vert) v.Q() = v.cP()[0];
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(300));
+  params.setValue(filters::param::kRefinement, IntValue(1));
+  const Snapshot before(*mm);
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_TRUE(Snapshot(*mm) == before) << "the input layer changed";
+  MeshModel* out = doc.mm();
+  ASSERT_NE(out, mm);
+  std::vector<Vec3> pos;
+  for (const auto& v : out->cm.vert) pos.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
+  std::vector<Tri> tris;
+  for (const auto& f : out->cm.face)
+    tris.push_back({int(f.cV(0) - &out->cm.vert[0]), int(f.cV(1) - &out->cm.vert[0]), int(f.cV(2) - &out->cm.vert[0])});
+  const test::Recount r = test::recount(tris, static_cast<int>(pos.size()));
+  EXPECT_TRUE(r.closedManifoldEdges && r.oriented && r.manifoldVertices);
+  EXPECT_EQ(r.components, 1);
+  EXPECT_EQ(r.genusSum, 0);
+  int insideFaces = 0;
+  for (const auto& v : out->cm.vert) {
+    EXPECT_NEAR(v.cQ(), v.cP()[0], 1e-5) << "quality not interpolated at the sample";
+    bool isInputVertex = false;
+    for (const auto& w : mm->cm.vert) isInputVertex = isInputVertex || w.cP() == v.cP();
+    insideFaces += !isInputVertex;
+  }
+  EXPECT_GT(insideFaces, 0);
+  EXPECT_NE(logText().find("faces run against their neighbours' orientation (3069 edges)"), std::string::npos)
+      << logText();
+}
+
+TEST_F(FilterInProcess, UniformRemeshOfANonOrientableSurfaceFailsCleanly) {
+  use("Remeshing: Geodesic Uniform");
+  const TriMesh strip = test::moebiusStrip(40);
+  MeshModel* mm = addMesh(doc, strip.positions, strip.triangles);
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(20));
+  expectCleanFailure(*mm, "not orientable");
+  EXPECT_EQ(doc.meshList.size(), 1) << "a failed filter added a layer";
+}
+
 // --- Adaptive remeshing and total curvature ---------------------------------------------------
 
 /// Vertices of `m` that are endpoints of an edge whose dihedral angle exceeds 60 degrees,

@@ -99,6 +99,26 @@ TriMesh cylinder(int nTheta, int nZ, double r, double h) {
   return std::move(buildTriMesh(std::move(pos), std::move(tris))).value();
 }
 
+TriMesh moebiusStrip(int n) {
+  std::vector<Vec3> pos;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * M_PI * i / n, half = t / 2;
+    const Vec3 centre(std::cos(t), std::sin(t), 0.0);
+    const Vec3 across = 0.3 * (std::cos(half) * Vec3(std::cos(t), std::sin(t), 0.0) + std::sin(half) * Vec3(0, 0, 1));
+    pos.push_back(centre - across);
+    pos.push_back(centre + across);
+  }
+  std::vector<Tri> t;
+  for (int i = 0; i < n; ++i) {
+    const int a = 2 * i, b = 2 * i + 1;
+    // The last quad joins side a of the last section to side b of the first one (the twist).
+    const int c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+    t.push_back({a, c, b});
+    t.push_back({b, c, d});
+  }
+  return std::move(buildTriMesh(std::move(pos), std::move(t))).value();
+}
+
 TriMesh uvSphere(int nLat, int nLon, double r) {
   std::vector<Vec3> pos;
   std::vector<Tri> tris;

@@ -27,6 +27,9 @@ namespace gr::test {
 TriMesh cylinder(int nTheta, int nZ, double r = 1.0, double h = 2.0);
 /// UV (latitude-longitude) sphere of radius r with poles: thin triangles near the poles.
 TriMesh uvSphere(int nLat, int nLon, double r = 1.0);
+/// Moebius strip: n quads around the unit circle, width 0.6, the ends glued with a half twist
+/// (one boundary loop, not orientable).
+TriMesh moebiusStrip(int n);
 
 }  // namespace gr::test
 

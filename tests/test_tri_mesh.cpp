@@ -799,5 +799,46 @@ TEST(TriMeshBadInput, FaceRepeatingAVertex) {
   EXPECT_TRUE(names(m.status().message, "vertex", 2)) << m.status().message;
 }
 
+// orientCoherently: a sphere with a third of its faces flipped gets exactly those faces back,
+// two components are oriented each by its own majority, and a Moebius strip is refused.
+TEST(OrientCoherently, RestoresTheFlippedFacesOfEachComponent) {
+  const TriMesh a = test::icosphere(2), b = test::icosphere(1);
+  std::vector<Vec3> pos = a.positions;
+  std::vector<Tri> original = a.triangles;
+  for (const Vec3& p : b.positions) pos.push_back(p + Vec3(3.0, 0.0, 0.0));
+  // The second sphere inside out: its majority orientation is the reversed one, and stays.
+  for (const Tri& t : b.triangles) original.push_back({t[0] + a.vertexCount(), t[2] + a.vertexCount(), t[1] + a.vertexCount()});
+  std::vector<Tri> shuffled = original;
+  std::vector<char> expected(shuffled.size(), 0);
+  for (size_t f = 0; f < shuffled.size(); f += 3) {
+    std::swap(shuffled[f][1], shuffled[f][2]);
+    expected[f] = 1;
+  }
+  const TriMesh m = build(pos, shuffled);
+  ASSERT_GT(m.topology.inconsistentEdges, 0);
+  std::vector<char> flipped;
+  const Expected<TriMesh> o = orientCoherently(m, &flipped);
+  ASSERT_TRUE(o) << o.status().message;
+  EXPECT_EQ(o->topology.inconsistentEdges, 0);
+  EXPECT_EQ(flipped, expected);
+  EXPECT_EQ(o->triangles, original);
+  EXPECT_EQ(o->topology.components, 2);
+  EXPECT_EQ(o->topology.genus, 0);
+  // Already coherent: nothing flipped.
+  const Expected<TriMesh> again = orientCoherently(*o, &flipped);
+  ASSERT_TRUE(again);
+  EXPECT_EQ(std::count(flipped.begin(), flipped.end(), 1), 0);
+}
+
+TEST(OrientCoherently, RefusesAMoebiusStrip) {
+  const TriMesh m = test::moebiusStrip(12);
+  ASSERT_TRUE(m.topology.isManifold());
+  ASSERT_EQ(m.topology.boundaryLoops, 1) << "a Moebius strip has one boundary loop";
+  const Expected<TriMesh> o = orientCoherently(m);
+  ASSERT_FALSE(o);
+  EXPECT_EQ(o.status().code, StatusCode::InvalidInput);
+  EXPECT_NE(o.status().message.find("not orientable"), std::string::npos) << o.status().message;
+}
+
 }  // namespace
 }  // namespace gr

@@ -8,15 +8,19 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cctype>
 #include <cstring>
+#include <filesystem>
 #include <limits>
 #include <set>
+#include <string>
 #include <vector>
 
 #include <common/GLLogStream.h>
 #include <common/meshmodel.h>
 
 #include "core/fast_marching.h"
+#include "core/vcg_mesh.h"
 #include "vcg_adapters/cmesho_adapter.h"
 #include "filter_geodesic_remesh/filter_geodesic_remesh.h"
 #include "filter_geodesic_remesh/parameter_names.h"
@@ -588,6 +592,75 @@ TEST_F(FilterInProcess, TotalCurvatureOfASphereIsTwoOverR) {
   EXPECT_NE(logText().find("written to vertex quality"), std::string::npos) << logText();
   EXPECT_EQ(doc.meshList.size(), 1);
 }
+
+// --- Every filter over every mesh of the data set ----------------------------------------------
+
+/// The data set's mesh files that loadTriMesh reads as triangle meshes (point clouds and
+/// prim.off, which crashes vcglib's OFF reader and so MeshLab's, are left out).
+std::vector<std::string> dataSetTriangleMeshes() {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(GR_MESH_DIR, error)) {
+    const std::string name = entry.path().filename().string(), ext = entry.path().extension().string();
+    if ((ext == ".off" || ext == ".ply" || ext == ".stl" || ext == ".obj") && name != "prim.off" &&
+        loadTriMesh(entry.path().string()))
+      names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  if (names.empty()) names.push_back("(no mesh found in " + std::string(GR_MESH_DIR) + ": run scripts/setup.sh)");
+  return names;
+}
+
+class FilterDataSetSweep : public FilterInProcess, public ::testing::WithParamInterface<std::string> {};
+
+// Each filter with its defaults on the mesh (vertex 0 selected for the fast marching): it succeeds
+// (a remeshing then leaves a manifold, oriented mesh with the input's components, genus and
+// boundary loops, recounted here, on a new layer), or it fails with a message in the log and the
+// input exactly as it was.
+TEST_P(FilterDataSetSweep, EveryFilterSucceedsOrFailsCleanly) {
+  const Expected<TriMesh> input = loadTriMesh(test::meshPath(GetParam()));
+  ASSERT_TRUE(input) << input.status().message;
+  const test::Recount in = test::recount(input->triangles, input->vertexCount());
+  MeshModel* mm = addMesh(doc, input->positions, input->triangles);
+  mm->cm.vert[0].SetS();
+  for (const char* filter : {"Geodesic Distance: Fast Marching from Selected Vertices", "Remeshing: Geodesic Uniform",
+                             "Remeshing: Geodesic Adaptive", "Compute Total Curvature (Normal Cycle) into Vertex Quality"}) {
+    SCOPED_TRACE(filter);
+    use(filter);
+    doc.setCurrent(mm);
+    declare(*mm);
+    const size_t layers = doc.meshList.size();
+    const Snapshot before(*mm);
+    if (!apply()) {
+      const std::string message = plugin.errorMsg().toStdString();
+      EXPECT_FALSE(message.empty());
+      EXPECT_NE(logText().find(message), std::string::npos) << "log:\n" << logText();
+      EXPECT_TRUE(Snapshot(*mm) == before) << "a failed filter changed the mesh: " << message;
+      EXPECT_EQ(doc.meshList.size(), layers) << "a failed filter added a layer";
+      continue;
+    }
+    if (std::string(filter).rfind("Remeshing", 0) != 0) continue;
+    EXPECT_TRUE(Snapshot(*mm) == before) << "the input layer changed";
+    ASSERT_EQ(doc.meshList.size(), layers + 1);
+    const MeshModel* out = doc.mm();
+    std::vector<Tri> tris;
+    for (const auto& f : out->cm.face)
+      tris.push_back({int(f.cV(0) - &out->cm.vert[0]), int(f.cV(1) - &out->cm.vert[0]), int(f.cV(2) - &out->cm.vert[0])});
+    const test::Recount o = test::recount(tris, out->cm.vn);
+    EXPECT_TRUE(o.manifoldEdges && o.manifoldVertices && o.oriented);
+    EXPECT_EQ(o.isolated, 0);
+    EXPECT_EQ(o.components, in.components);
+    EXPECT_EQ(o.genusSum, in.genusSum);
+    EXPECT_EQ(o.boundaryLoops, in.boundaryLoops);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, FilterDataSetSweep, ::testing::ValuesIn(dataSetTriangleMeshes()),
+                         [](const ::testing::TestParamInfo<std::string>& p) {
+                           std::string n;
+                           for (char ch : p.param) n += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+                           return n;
+                         });
 
 }  // namespace
 }  // namespace gr

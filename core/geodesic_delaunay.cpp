@@ -31,6 +31,7 @@ Dual buildDual(const TriMesh& mesh, const std::vector<int>& label, int cellCount
     const Tri& t = mesh.triangles[f];
     std::array<int, 3> key = {label[t[0]], label[t[1]], label[t[2]]};
     if (key[0] == key[1] || key[1] == key[2] || key[2] == key[0]) continue;
+    if (key[0] < 0 || key[1] < 0 || key[2] < 0) continue;  // a vertex no front reached
     std::sort(key.begin(), key.end());
     found.push_back({key, f});
     ++bucketBegin[key[0] + 1];
@@ -89,6 +90,18 @@ Status checkInput(const TriMesh& mesh, const std::vector<SurfacePoint>& samples)
     return invalidInput("the mesh is not manifold (" + std::to_string(mesh.topology.nonManifoldEdges) +
                         " non-manifold edges, " + std::to_string(mesh.topology.nonManifoldVertices) +
                         " non-manifold vertices)");
+  // A component whose faces all have zero area (points on a line or at one place) has no
+  // surface to triangulate.
+  std::vector<double> area(mesh.topology.components, 0.0);
+  for (const Tri& t : mesh.triangles) {
+    const int c = mesh.topology.componentOfVertex[t[0]];
+    if (c >= 0)
+      area[c] += (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm();
+  }
+  for (size_t c = 0; c < area.size(); ++c)
+    if (!(area[c] > 0.0))
+      return invalidInput("component " + std::to_string(c) + " of the mesh has zero area (all its faces are "
+                          "degenerate): there is no surface to remesh");
   // The dual's triangles take the orientation of the input faces they come from.
   if (mesh.topology.inconsistentEdges > 0)
     return invalidInput("the faces of the mesh are not oriented coherently (" +

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <string>
 
@@ -28,7 +29,9 @@ class DisjointSets {
 };
 
 std::string formatVec(const Vec3& p) {
-  return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()) + ")";
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", p.x(), p.y(), p.z());
+  return text;
 }
 
 Status validate(const std::vector<Vec3>& positions, const std::vector<Tri>& triangles) {
@@ -40,6 +43,15 @@ Status validate(const std::vector<Vec3>& positions, const std::vector<Tri>& tria
     if (!positions[v].allFinite())
       return invalidInput("vertex " + std::to_string(v) + " has a non-finite coordinate " +
                           formatVec(positions[v]));
+  // Distances are computed from squared differences: they must not overflow.
+  Vec3 lo = positions[0], hi = positions[0];
+  for (const Vec3& p : positions) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  if (!std::isfinite((hi - lo).squaredNorm()))
+    return invalidInput("the coordinates are too large (bounding box " + formatVec(lo) + " to " + formatVec(hi) +
+                        "): squared distances overflow; scale the mesh down first");
   const int n = static_cast<int>(positions.size());
   for (size_t f = 0; f < triangles.size(); ++f) {
     const Tri& t = triangles[f];

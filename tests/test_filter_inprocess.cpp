@@ -352,7 +352,12 @@ TEST_F(FilterInProcess, UniformRemeshBadInputLeavesTheDocumentAlone) {
   declare(*f);
   params.setValue(filters::param::kRelaxation, IntValue(-1));
   expectCleanFailure(*f, "Relaxation must be 0 to 100 rounds");
-  EXPECT_EQ(doc.meshList.size(), 3) << "a failed filter added a layer";
+  std::vector<Vec3> line = grid.positions;
+  for (Vec3& x : line) x = Vec3(x.x(), 0, 0);  // the grid collapsed onto a segment
+  MeshModel* flat = addMesh(doc, line, grid.triangles);
+  declare(*flat);
+  expectCleanFailure(*flat, "zero area");
+  EXPECT_EQ(doc.meshList.size(), 4) << "a failed filter added a layer";
 }
 
 // An input whose faces are not oriented coherently (blobby-shuffled.off: 3,069 edges whose two

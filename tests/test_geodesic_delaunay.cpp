@@ -202,6 +202,18 @@ TEST(Delaunay, RejectsBadInput) {
   const TriMesh f = test::loadRealMesh("fandisk.off");
   EXPECT_EQ(geodesicDelaunay(f, Metric::uniform(), {}).status().code, StatusCode::InvalidInput);
   EXPECT_EQ(geodesicDelaunay(f, Metric::uniform(), {-3}).status().code, StatusCode::InvalidInput);
+  // A sphere collapsed onto a segment or a point: every face has zero area (an adversarial run
+  // used to end in "no cell can be refined").
+  const TriMesh sphere = test::icosphere(3);
+  for (const bool toPoint : {false, true}) {
+    std::vector<Vec3> p = sphere.positions;
+    for (Vec3& x : p) x = toPoint ? Vec3(1, 2, 3) : Vec3(x.x(), 0, 0);
+    const TriMesh m = std::move(buildTriMesh(p, sphere.triangles)).value();
+    const auto r = geodesicDelaunay(m, Metric::uniform(), {0, 100, 200});
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.status().code, StatusCode::InvalidInput);
+    EXPECT_NE(r.status().message.find("zero area"), std::string::npos) << r.status().message;
+  }
 }
 
 }  // namespace

@@ -783,6 +783,19 @@ TEST(TriMeshBadInput, NonFiniteCoordinate) {
   }
 }
 
+// Coordinates so large that squared distances overflow (found by an adversarial run: a vertex
+// at 1e308 gave infinite edge lengths, unreached vertices, and a read at cell -1).
+TEST(TriMeshBadInput, CoordinatesWhoseSquaredDistancesOverflow) {
+  std::vector<Vec3> p = tetraPositions();
+  p[2] = Vec3(1e200, 0.0, 0.0);
+  Expected<TriMesh> m = buildTriMesh(p, tetraFaces());
+  ASSERT_FALSE(m.hasValue());
+  EXPECT_EQ(m.status().code, StatusCode::InvalidInput);
+  EXPECT_NE(m.status().message.find("too large"), std::string::npos) << m.status().message;
+  p[2] = Vec3(1e150, 0.0, 0.0);  // squares up to 1e300: still fine
+  EXPECT_TRUE(buildTriMesh(p, tetraFaces()).hasValue());
+}
+
 TEST(TriMeshBadInput, FaceRepeatingAVertex) {
   std::vector<Tri> t = tetraFaces();
   t.push_back({1, 3, 1});

@@ -10,9 +10,6 @@
 // faces disagree on orientation are oriented first, as the filters do (orientCoherently).
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,22 +20,6 @@
 
 namespace gr {
 namespace {
-
-/// Files of the data set that no loader of ours can read safely: vcglib's OFF reader (MeshLab's
-/// too) crashes on prim.off, whose header is followed by '#' comment lines.
-bool unreadable(const std::string& name) { return name == "prim.off"; }
-
-std::vector<std::string> dataSetMeshes() {
-  std::vector<std::string> names;
-  std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(GR_MESH_DIR, error)) {
-    const std::string name = entry.path().filename().string(), ext = entry.path().extension().string();
-    if ((ext == ".off" || ext == ".ply" || ext == ".stl" || ext == ".obj") && !unreadable(name)) names.push_back(name);
-  }
-  std::sort(names.begin(), names.end());
-  if (names.empty()) names.push_back("(no mesh found in " + std::string(GR_MESH_DIR) + ": run scripts/setup.sh)");
-  return names;
-}
 
 class DataSetSweep : public ::testing::TestWithParam<std::string> {};
 
@@ -83,22 +64,13 @@ TEST_P(DataSetSweep, ValidOutputWithTheInputTopologyOrAClearError) {
     }
     ASSERT_TRUE(r) << r.status().message;
     const TriMesh& out = r->mesh.mesh;
-    const test::Recount o = test::recount(out.triangles, out.vertexCount());
-    EXPECT_TRUE(o.manifoldEdges && o.manifoldVertices && o.oriented);
-    EXPECT_EQ(o.isolated, 0);
-    EXPECT_EQ(o.components, in.components);
-    EXPECT_EQ(o.genusSum, in.genusSum);
-    EXPECT_EQ(o.boundaryLoops, in.boundaryLoops);
+    test::expectValidWithTopologyOf(test::recount(out.triangles, out.vertexCount()), in);
     EXPECT_EQ(out.vertexCount(), target + r->mesh.addedSamples - r->mesh.droppedSamples);
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Meshes, DataSetSweep, ::testing::ValuesIn(dataSetMeshes()),
-                         [](const ::testing::TestParamInfo<std::string>& p) {
-                           std::string n;
-                           for (char ch : p.param) n += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-                           return n;
-                         });
+INSTANTIATE_TEST_SUITE_P(Meshes, DataSetSweep, ::testing::ValuesIn(test::dataSetMeshFiles()),
+                         [](const auto& info) { return test::testNameOfFile(info.param); });
 
 }  // namespace
 }  // namespace gr

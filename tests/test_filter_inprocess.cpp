@@ -8,9 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cctype>
 #include <cstring>
-#include <filesystem>
 #include <limits>
 #include <set>
 #include <string>
@@ -44,6 +42,16 @@ MeshModel* addMesh(MeshDocument& doc, const std::vector<Vec3>& positions, const 
   }
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
   return mm;
+}
+
+/// The faces of a layer (with no deleted elements, as the filters leave them) as vertex indices.
+std::vector<Tri> faceIndices(const MeshModel& mm) {
+  std::vector<Tri> tris;
+  if (mm.cm.vert.empty()) return tris;
+  tris.reserve(mm.cm.face.size());
+  const CVertexO* const first = &mm.cm.vert[0];
+  for (const auto& f : mm.cm.face) tris.push_back({int(f.cV(0) - first), int(f.cV(1) - first), int(f.cV(2) - first)});
+  return tris;
 }
 
 /// Everything a filter could change in a mesh.
@@ -252,9 +260,7 @@ TEST_F(FilterInProcess, UniformRemeshMakesANewLayerAndKeepsTheInput) {
   ASSERT_NE(out, mm);
   std::vector<Vec3> pos;
   for (const auto& v : out->cm.vert) pos.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
-  std::vector<Tri> tris;
-  for (const auto& f : out->cm.face)
-    tris.push_back({int(f.cV(0) - &out->cm.vert[0]), int(f.cV(1) - &out->cm.vert[0]), int(f.cV(2) - &out->cm.vert[0])});
+  const std::vector<Tri> tris = faceIndices(*out);
   const auto result = buildTriMesh(pos, tris);
   ASSERT_TRUE(result);
   EXPECT_GE(result->vertexCount(), 400);
@@ -381,9 +387,7 @@ TEST_F(FilterInProcess, UniformRemeshOrientsAnIncoherentInput) {
   ASSERT_NE(out, mm);
   std::vector<Vec3> pos;
   for (const auto& v : out->cm.vert) pos.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
-  std::vector<Tri> tris;
-  for (const auto& f : out->cm.face)
-    tris.push_back({int(f.cV(0) - &out->cm.vert[0]), int(f.cV(1) - &out->cm.vert[0]), int(f.cV(2) - &out->cm.vert[0])});
+  const std::vector<Tri> tris = faceIndices(*out);
   const test::Recount r = test::recount(tris, static_cast<int>(pos.size()));
   EXPECT_TRUE(r.closedManifoldEdges && r.oriented && r.manifoldVertices);
   EXPECT_EQ(r.components, 1);
@@ -600,19 +604,12 @@ TEST_F(FilterInProcess, TotalCurvatureOfASphereIsTwoOverR) {
 
 // --- Every filter over every mesh of the data set ----------------------------------------------
 
-/// The data set's mesh files that loadTriMesh reads as triangle meshes (point clouds and
-/// prim.off, which crashes vcglib's OFF reader and so MeshLab's, are left out).
+/// The data set's mesh files that loadTriMesh reads as triangle meshes (point clouds left out).
 std::vector<std::string> dataSetTriangleMeshes() {
   std::vector<std::string> names;
-  std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(GR_MESH_DIR, error)) {
-    const std::string name = entry.path().filename().string(), ext = entry.path().extension().string();
-    if ((ext == ".off" || ext == ".ply" || ext == ".stl" || ext == ".obj") && name != "prim.off" &&
-        loadTriMesh(entry.path().string()))
-      names.push_back(name);
-  }
-  std::sort(names.begin(), names.end());
-  if (names.empty()) names.push_back("(no mesh found in " + std::string(GR_MESH_DIR) + ": run scripts/setup.sh)");
+  for (const std::string& name : test::dataSetMeshFiles())
+    if (loadTriMesh(test::meshPath(name))) names.push_back(name);
+  if (names.empty()) names.push_back("(no triangle mesh found in " + std::string(GR_MESH_DIR) + ")");
   return names;
 }
 
@@ -648,24 +645,12 @@ TEST_P(FilterDataSetSweep, EveryFilterSucceedsOrFailsCleanly) {
     EXPECT_TRUE(Snapshot(*mm) == before) << "the input layer changed";
     ASSERT_EQ(doc.meshList.size(), layers + 1);
     const MeshModel* out = doc.mm();
-    std::vector<Tri> tris;
-    for (const auto& f : out->cm.face)
-      tris.push_back({int(f.cV(0) - &out->cm.vert[0]), int(f.cV(1) - &out->cm.vert[0]), int(f.cV(2) - &out->cm.vert[0])});
-    const test::Recount o = test::recount(tris, out->cm.vn);
-    EXPECT_TRUE(o.manifoldEdges && o.manifoldVertices && o.oriented);
-    EXPECT_EQ(o.isolated, 0);
-    EXPECT_EQ(o.components, in.components);
-    EXPECT_EQ(o.genusSum, in.genusSum);
-    EXPECT_EQ(o.boundaryLoops, in.boundaryLoops);
+    test::expectValidWithTopologyOf(test::recount(faceIndices(*out), out->cm.vn), in);
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, FilterDataSetSweep, ::testing::ValuesIn(dataSetTriangleMeshes()),
-                         [](const ::testing::TestParamInfo<std::string>& p) {
-                           std::string n;
-                           for (char ch : p.param) n += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-                           return n;
-                         });
+                         [](const auto& info) { return test::testNameOfFile(info.param); });
 
 }  // namespace
 }  // namespace gr

@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <numeric>
 #include <set>
@@ -14,6 +17,32 @@
 namespace gr::test {
 
 std::string meshPath(const std::string& name) { return std::string(GR_MESH_DIR) + "/" + name; }
+
+std::vector<std::string> dataSetMeshFiles() {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(GR_MESH_DIR, error)) {
+    const std::string name = entry.path().filename().string(), ext = entry.path().extension().string();
+    if ((ext == ".off" || ext == ".ply" || ext == ".stl" || ext == ".obj") && name != "prim.off") names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  if (names.empty()) names.push_back("(no mesh found in " + std::string(GR_MESH_DIR) + ": run scripts/setup.sh)");
+  return names;
+}
+
+std::string testNameOfFile(const std::string& file) {
+  std::string n;
+  for (char ch : file) n += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+  return n;
+}
+
+void expectValidWithTopologyOf(const Recount& out, const Recount& in) {
+  EXPECT_TRUE(out.manifoldEdges && out.manifoldVertices && out.oriented);
+  EXPECT_EQ(out.isolated, 0);
+  EXPECT_EQ(out.components, in.components);
+  EXPECT_EQ(out.genusSum, in.genusSum);
+  EXPECT_EQ(out.boundaryLoops, in.boundaryLoops);
+}
 
 TriMesh loadRealMesh(const std::string& name) {
   Expected<TriMesh> m = loadTriMesh(meshPath(name));

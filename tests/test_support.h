@@ -83,3 +83,19 @@ struct AngleRecount {
 AngleRecount recountAngles(const TriMesh& mesh);
 
 }  // namespace gr::test
+
+namespace gr::test {
+
+/// The mesh files (.off, .ply, .stl, .obj) of the data set fetched by scripts/setup.sh, sorted;
+/// prim.off is left out (its header is followed by '#' comment lines, on which vcglib's OFF
+/// reader, MeshLab's too, crashes). If none is found, one name that says so, so that a
+/// parameterised test fails with that name instead of instantiating nothing.
+std::vector<std::string> dataSetMeshFiles();
+/// A gtest parameter name for a mesh file ("bunny00.off" -> "bunny00_off").
+std::string testNameOfFile(const std::string& file);
+
+/// EXPECTs that `out` is an edge- and vertex-manifold, oriented surface with no isolated vertex
+/// and the components, genus and boundary loops of `in`.
+void expectValidWithTopologyOf(const Recount& out, const Recount& in);
+
+}  // namespace gr::test

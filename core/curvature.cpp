@@ -216,7 +216,7 @@ Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvaturePar
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   long totalSize = 0;
   for (int v = 0; v < n; ++v) {
-    if ((v & 4095) == 0 && !progress.report(double(v) / n, "curvature")) return cancelled();
+    if ((v & 4095) == 0 && !progress.report(double(v) / n, "Curvature")) return cancelled();
     if (begin[v] == begin[v + 1]) continue;  // isolated vertex
     const CellPoint pv = point[v];
     // The 1-ring: its distances give the ball's radius, the requested one or the 1-ring's (mean
@@ -293,7 +293,7 @@ Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvaturePar
     result.tau[original] = std::abs(a) + std::abs(b);
   }
   result.meanNeighbourhoodSize = double(totalSize) / n;
-  progress.report(1.0, "curvature");
+  progress.report(1.0, "Curvature");
   return result;
 }
 

@@ -11,7 +11,7 @@ Expected<RemeshResult> remesh(FastMarcher& marcher, const RemeshParams& params, 
                                                    progress.sub(0.65, 0.95));
   if (!mesh) return mesh.status();
   r.mesh = std::move(*mesh);
-  if (!progress.report(0.95, "relaxation")) return cancelled();
+  if (!progress.report(0.95, "Relaxation")) return cancelled();
   Expected<RelaxationResult> relaxation =
       relaxOnSurface(r.mesh.mesh, r.mesh.samplePoint, marcher.mesh(), params.relaxation);
   if (!relaxation) return relaxation.status();

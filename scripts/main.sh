@@ -29,9 +29,11 @@ run() {  # run <script.mlx> <output.ply> <what the output holds>
   log=$(cd "$root/output" && xvfb-run -a stdbuf -oL "$stage/bin/meshlabserver" -i "$mesh" -o "$out" -m vq vc sa -s "$script" 2>&1)
   local rc=$?
   set -e
-  # MeshLab's own log lines of the run (noise and progress messages filtered out).
+  # MeshLab's own log lines of the run (noise filtered out). meshlabserver prints our progress
+  # labels with no line break, so a run of them can prefix the next log line: a label directly
+  # followed by a letter (the next label or log line, with no space) is cut.
   echo "$log" | grep -vE "^LOG: |XDG_RUNTIME_DIR|no additional memory|^Loading Plugins|^Total [0-9]+ (filtering|io)|Current Plugins Dir|^$" |
-    sed -E 's/(Farthest point sampling|Fast marching|Geodesic Delaunay repair|curvature)+//g' | sed 's/^/  /'
+    sed -E ':a; s/^(Farthest point sampling|Fast marching|Geodesic Delaunay repair|Relaxation|Curvature)([A-Za-z])/\2/; ta' | sed 's/^/  /'
   echo "== exit code $rc"
   [ $rc -eq 0 ] && [ -s "$out" ] || { echo "main: meshlabserver failed" >&2; exit 1; }
   local nv nf

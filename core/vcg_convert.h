@@ -43,8 +43,8 @@ Expected<TriMesh> toTriMesh(const VcgMesh& m, VcgIndexMap* map = nullptr) {
     Tri t;
     for (int k = 0; k < 3; ++k) {
       const auto* vp = f.cV(k);
-      const long slot = vp - &m.vert[0];
-      if (vp == nullptr || slot < 0 || slot >= long(m.vert.size()) || idx.coreOfVcgVertex[slot] < 0)
+      const long slot = vp == nullptr || m.vert.empty() ? -1 : long(vp - &m.vert[0]);
+      if (slot < 0 || slot >= long(m.vert.size()) || idx.coreOfVcgVertex[slot] < 0)
         return invalidInput("face " + std::to_string(i) + " references a deleted or missing vertex");
       t[k] = idx.coreOfVcgVertex[slot];
     }

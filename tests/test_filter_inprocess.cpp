@@ -602,6 +602,82 @@ TEST_F(FilterInProcess, TotalCurvatureOfASphereIsTwoOverR) {
   EXPECT_EQ(doc.meshList.size(), 1);
 }
 
+// A layer with deleted elements, as MeshLab leaves one after "Delete Selected Faces" and
+// "Delete Selected Vertices" (nothing compacted): each filter must give on its live part exactly
+// what it gives on the same mesh stored compactly, whatever the deleted slots hold (a NaN here).
+TEST_F(FilterInProcess, EveryFilterIgnoresDeletedElements) {
+  const TriMesh sphere = test::icosphere(4);
+  MeshModel* holed = addMesh(doc, sphere.positions, sphere.triangles);
+  // Delete the cap z > 0.6 (faces, then the vertices left without a face): a disk remains.
+  CMeshO& h = holed->cm;
+  std::vector<char> used(h.vert.size(), 0);
+  for (auto& f : h.face) {
+    if (f.cV(0)->cP()[2] > 0.6f && f.cV(1)->cP()[2] > 0.6f && f.cV(2)->cP()[2] > 0.6f) {
+      vcg::tri::Allocator<CMeshO>::DeleteFace(h, f);
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) used[f.cV(k) - &h.vert[0]] = 1;
+  }
+  std::vector<int> compactIndex(h.vert.size(), -1);
+  std::vector<Vec3> livePositions;
+  for (size_t i = 0; i < h.vert.size(); ++i) {
+    if (!used[i]) {
+      vcg::tri::Allocator<CMeshO>::DeleteVertex(h, h.vert[i]);
+      continue;
+    }
+    compactIndex[i] = static_cast<int>(livePositions.size());
+    livePositions.push_back(sphere.positions[i]);
+  }
+  ASSERT_GT(h.vert.size() - h.vn, 10u);
+  for (auto& v : h.vert)
+    if (v.IsD()) v.P()[0] = std::numeric_limits<float>::quiet_NaN();  // never to be read
+  std::vector<Tri> liveTriangles;
+  for (const auto& f : h.face)
+    if (!f.IsD()) liveTriangles.push_back({compactIndex[f.cV(0) - &h.vert[0]], compactIndex[f.cV(1) - &h.vert[0]],
+                                           compactIndex[f.cV(2) - &h.vert[0]]});
+  MeshModel* compact = addMesh(doc, livePositions, liveTriangles);
+  const std::vector<int> liveSlots = [&] {
+    std::vector<int> live;  // (not "slots": a Qt macro)
+    for (size_t i = 0; i < h.vert.size(); ++i)
+      if (!h.vert[i].IsD()) live.push_back(static_cast<int>(i));
+    return live;
+  }();
+  h.vert[liveSlots[0]].SetS();
+  compact->cm.vert[0].SetS();
+
+  for (const char* filter : {"Geodesic Distance: Fast Marching from Selected Vertices", "Remeshing: Geodesic Uniform",
+                             "Remeshing: Geodesic Adaptive", "Compute Total Curvature (Normal Cycle) into Vertex Quality"}) {
+    SCOPED_TRACE(filter);
+    use(filter);
+    MeshModel* out[2] = {nullptr, nullptr};
+    MeshModel* in[2] = {holed, compact};
+    for (int i = 0; i < 2; ++i) {
+      doc.setCurrent(in[i]);
+      declare(*in[i]);
+      if (std::string(filter) == "Remeshing: Geodesic Uniform") params.setValue(filters::param::kTargetVertices, IntValue(300));
+      ASSERT_TRUE(apply()) << logText();
+      out[i] = doc.mm();
+    }
+    if (out[0] == holed) {  // a field written into the input: compare it per live vertex
+      for (size_t k = 0; k < liveSlots.size(); ++k)
+        ASSERT_EQ(h.vert[liveSlots[k]].cQ(), compact->cm.vert[k].cQ()) << "live vertex " << k;
+      continue;
+    }
+    ASSERT_NE(out[0], holed);
+    ASSERT_NE(out[1], compact);
+    ASSERT_EQ(out[0]->cm.vn, out[1]->cm.vn);
+    ASSERT_EQ(out[0]->cm.fn, out[1]->cm.fn);
+    for (int k = 0; k < out[0]->cm.vn; ++k) {
+      ASSERT_EQ(out[0]->cm.vert[k].cP(), out[1]->cm.vert[k].cP()) << k;
+      ASSERT_EQ(out[0]->cm.vert[k].cQ(), out[1]->cm.vert[k].cQ()) << k;
+    }
+    EXPECT_EQ(faceIndices(*out[0]), faceIndices(*out[1]));
+    const test::Recount r = test::recount(faceIndices(*out[0]), out[0]->cm.vn);
+    test::expectValidWithTopologyOf(r, test::recount(liveTriangles, static_cast<int>(livePositions.size())));
+    EXPECT_EQ(r.boundaryLoops, 1);
+  }
+}
+
 // --- Every filter over every mesh of the data set ----------------------------------------------
 
 /// The data set's mesh files that loadTriMesh reads as triangle meshes (point clouds left out).

@@ -152,6 +152,16 @@ Status remeshToNewLayer(MeshDocument& doc, const CurrentMesh& current, const Rem
           (request.metric.isUniform() ? std::string() : " (a travel time: distance over speed)") +
           (result.flippedEdges > 0 ? "; " + std::to_string(result.flippedEdges) + " edges flipped to Delaunay"
                                     : std::string()));
+  // A triangle soup (an STL read without merging its vertices) is as many components as faces,
+  // each of which keeps its own vertices: the output is then the input. Say why, and what helps.
+  int looseFaces = 0;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+    looseFaces += mesh.oppositeCorner[3 * f] < 0 && mesh.oppositeCorner[3 * f + 1] < 0 && mesh.oppositeCorner[3 * f + 2] < 0;
+  if (looseFaces > 0 && 10 * looseFaces >= mesh.faceCount())
+    ctx.warn(std::to_string(looseFaces) + " of the " + std::to_string(mesh.faceCount()) +
+             " faces share no edge with another face (separate triangles, as an STL file read without merging "
+             "its vertices gives): each is a component of its own and keeps its three vertices. Run 'Cleaning "
+             "and Repairing > Merge Close Vertices' first to remesh the surface they form.");
   if (relaxed.iterations > 0)
     ctx.log("Relaxation on the input surface: " + std::to_string(relaxed.iterations) + " rounds, " +
             std::to_string(relaxed.moves) + " vertex moves, " + std::to_string(relaxed.flips) + " flips; " +

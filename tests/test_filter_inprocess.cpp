@@ -602,6 +602,31 @@ TEST_F(FilterInProcess, TotalCurvatureOfASphereIsTwoOverR) {
   EXPECT_EQ(doc.meshList.size(), 1);
 }
 
+// A triangle soup (every face with its own three vertices, as an STL read without merging):
+// valid output with the input's topology (each face a component: the output is the input), and
+// a warning that says what to do.
+TEST_F(FilterInProcess, UniformRemeshOfATriangleSoupWarnsToMergeVertices) {
+  const TriMesh sphere = test::icosphere(2);
+  std::vector<Vec3> positions;
+  std::vector<Tri> soup;
+  for (const Tri& t : sphere.triangles) {
+    const int first = static_cast<int>(positions.size());
+    for (int v : t) positions.push_back(sphere.positions[v]);
+    soup.push_back({first, first + 1, first + 2});
+  }
+  use("Remeshing: Geodesic Uniform");
+  MeshModel* mm = addMesh(doc, positions, soup);
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(100));
+  ASSERT_TRUE(apply()) << logText();
+  MeshModel* out = doc.mm();
+  ASSERT_NE(out, mm);
+  test::expectValidWithTopologyOf(test::recount(faceIndices(*out), out->cm.vn),
+                                  test::recount(soup, static_cast<int>(positions.size())));
+  EXPECT_NE(logText().find("320 of the 320 faces share no edge"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("Merge Close Vertices"), std::string::npos) << logText();
+}
+
 // A layer with deleted elements, as MeshLab leaves one after "Delete Selected Faces" and
 // "Delete Selected Vertices" (nothing compacted): each filter must give on its live part exactly
 // what it gives on the same mesh stored compactly, whatever the deleted slots hold (a NaN here).

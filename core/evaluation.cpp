@@ -1,7 +1,10 @@
 #include "core/evaluation.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <thread>
+#include <vector>
 
 #include <vcg/complex/algorithms/closest.h>
 #include <vcg/space/index/grid_static_ptr.h>
@@ -57,35 +60,72 @@ AngleStatistics angleStatistics(const TriMesh& mesh) {
   return a;
 }
 
-SurfaceDistance surfaceDistance(const TriMesh& from, const TriMesh& to) {
+SurfaceDistance surfaceDistance(const TriMesh& from, const TriMesh& to, Progress progress, int maxThreads) {
   SurfaceDistance d;
   if (from.vertexCount() == 0 || to.faceCount() == 0) return d;
   CoreMesh target;
   toCoreMesh(to, target);
+  // vcglib's default grid has as many cells as faces, most of them empty (a surface fills few
+  // cells of a volume), so the occupied ones hold tens of faces each. Sixteen cells per face (at
+  // most 2^24 cells, 128 MiB of cell pointers) makes each query 2-3x faster (measured on an
+  // armadillo subdivided to 416k vertices against its 25k remesh, both ways) for a build that
+  // stays under a second.
   vcg::GridStaticPtr<CoreFace, double> grid;
-  grid.Set(target.face.begin(), target.face.end());
-  vcg::face::PointDistanceBaseFunctor<double> pointToFace;
-  vcg::tri::EmptyTMark<CoreMesh> marker;
+  grid.Set(target.face.begin(), target.face.end(), static_cast<int>(std::min(16L * to.faceCount(), 1L << 24)));
   const double searchRadius = 2.0 * (to.boundingBoxDiagonal() + from.boundingBoxDiagonal());
-  double sumSq = 0.0;
-  long n = 0;
-  auto sample = [&](const Vec3& p) {
-    double dist = searchRadius;
-    vcg::Point3d closest;
-    grid.GetClosest(pointToFace, marker, vcg::Point3d(p.x(), p.y(), p.z()), searchRadius, dist, closest);
-    d.max = std::max(d.max, dist);
-    sumSq += dist * dist;
-    ++n;
-  };
-  for (const Vec3& p : from.positions) sample(p);
-  for (const Tri& t : from.triangles) {
+  // Sample q: vertex q for q < V, then per face its centroid and the midpoints of its three sides.
+  const long vertices = from.vertexCount(), total = vertices + 4L * from.faceCount();
+  const auto samplePoint = [&](long q) -> Vec3 {
+    if (q < vertices) return from.positions[q];
+    const Tri& t = from.triangles[(q - vertices) / 4];
     const Vec3 &a = from.positions[t[0]], &b = from.positions[t[1]], &c = from.positions[t[2]];
-    sample((a + b + c) / 3.0);
-    sample(0.5 * (a + b));
-    sample(0.5 * (b + c));
-    sample(0.5 * (c + a));
+    switch ((q - vertices) % 4) {
+      case 0: return (a + b + c) / 3.0;
+      case 1: return 0.5 * (a + b);
+      case 2: return 0.5 * (b + c);
+      default: return 0.5 * (c + a);
+    }
+  };
+  constexpr long kBlock = 1 << 14;
+  const long blocks = (total + kBlock - 1) / kBlock;
+  std::vector<double> blockMax(blocks, 0.0), blockSumSq(blocks, 0.0);
+  std::atomic<long> nextBlock{0};
+  std::atomic<bool> cancelled{false};
+  // Each thread takes the next block until none is left; vcglib's grid is only read (no marks).
+  const auto work = [&](bool reports) {
+    vcg::face::PointDistanceBaseFunctor<double> pointToFace;
+    vcg::tri::EmptyTMark<CoreMesh> marker;
+    for (long b = nextBlock++; b < blocks; b = nextBlock++) {
+      double mx = 0.0, sumSq = 0.0;
+      for (long q = b * kBlock, end = std::min(total, q + kBlock); q < end; ++q) {
+        const Vec3 p = samplePoint(q);
+        double dist = searchRadius;
+        vcg::Point3d closest;
+        grid.GetClosest(pointToFace, marker, vcg::Point3d(p.x(), p.y(), p.z()), searchRadius, dist, closest);
+        mx = std::max(mx, dist);
+        sumSq += dist * dist;
+      }
+      blockMax[b] = mx;
+      blockSumSq[b] = sumSq;
+      if (reports && !progress.report(double(b + 1) / blocks, "Surface distance")) {
+        cancelled = true;
+        nextBlock = blocks;
+      }
+    }
+  };
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const long threads = std::min<long>(blocks, maxThreads > 0 ? maxThreads : hardware);
+  std::vector<std::thread> helpers;
+  for (long i = 1; i < threads; ++i) helpers.emplace_back(work, false);
+  work(true);
+  for (std::thread& t : helpers) t.join();
+  double sumSq = 0.0;
+  for (long b = 0; b < blocks; ++b) {
+    d.max = std::max(d.max, blockMax[b]);
+    sumSq += blockSumSq[b];
   }
-  d.rms = std::sqrt(sumSq / n);
+  d.rms = std::sqrt(sumSq / total);
+  d.complete = !cancelled;
   return d;
 }
 

@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "core/progress.h"
 #include "core/tri_mesh.h"
 
 namespace gr {
@@ -33,10 +34,16 @@ AngleStatistics angleStatistics(const TriMesh& mesh);
 
 /// Distance from the surface `from` to the surface `to`, sampled at the vertices, edge midpoints
 /// and face centroids of `from` (each to its nearest point of `to`, found with vcglib's grid).
+/// The samples are measured in fixed blocks on all hardware threads (up to `maxThreads`; 0 = as
+/// many as the machine has) and the blocks combined in order, so the result does not depend on
+/// the thread count. Cost: O(V + F) queries of about 1-3 us each; 15 million for a 1.66M-vertex
+/// input against its remesh (14 s on one core). `progress` is reported from the calling thread
+/// only; if it cancels, the result is marked incomplete.
 struct SurfaceDistance {
   double max = 0.0;  ///< one-sided Hausdorff distance
   double rms = 0.0;  ///< root mean square over the samples
+  bool complete = true;  ///< false if cancelled through the progress callback
 };
-SurfaceDistance surfaceDistance(const TriMesh& from, const TriMesh& to);
+SurfaceDistance surfaceDistance(const TriMesh& from, const TriMesh& to, Progress progress = {}, int maxThreads = 0);
 
 }  // namespace gr

@@ -70,7 +70,7 @@ TEST_P(DataSetSweep, ValidOutputWithTheInputTopologyOrAClearError) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, DataSetSweep, ::testing::ValuesIn(test::dataSetMeshFiles()),
-                         [](const auto& info) { return test::testNameOfFile(info.param); });
+                         [](const auto& mesh) { return test::testNameOfFile(mesh.param); });
 
 }  // namespace
 }  // namespace gr

@@ -751,7 +751,7 @@ TEST_P(FilterDataSetSweep, EveryFilterSucceedsOrFailsCleanly) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, FilterDataSetSweep, ::testing::ValuesIn(dataSetTriangleMeshes()),
-                         [](const auto& info) { return test::testNameOfFile(info.param); });
+                         [](const auto& mesh) { return test::testNameOfFile(mesh.param); });
 
 }  // namespace
 }  // namespace gr

@@ -155,7 +155,7 @@ Status applyTotalCurvature(MeshDocument& doc, const RichParameterList& params, F
           formatNumber(tau->meanNeighbourhoodSize, "%.1f") + " vertices per ball on average) written to vertex quality: "
           "from " + formatNumber(*lo, "%.4g") + " to " + formatNumber(*top, "%.4g") + ", 95th percentile " +
           formatNumber(hi, "%.4g") + " (colour ramp from 0 to it)");
-  ctx.log("Time: " + formatNumber(ms, "%.4g") + " ms");
+  ctx.log("Time: " + formatDuration(ms));
   return Status::ok();
 }
 

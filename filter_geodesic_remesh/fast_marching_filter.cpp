@@ -94,7 +94,7 @@ Status applyFastMarching(MeshDocument& doc, const RichParameterList& params, Fil
   if (topology.nonManifoldVertices > 0)
     ctx.warn("the mesh has " + std::to_string(topology.nonManifoldVertices) +
              " non-manifold vertices; fronts cross them through the vertex only");
-  ctx.log("Time: " + formatNumber(ms) + " ms");
+  ctx.log("Time: " + formatDuration(ms));
   return Status::ok();
 }
 

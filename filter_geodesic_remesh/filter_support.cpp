@@ -18,4 +18,8 @@ std::string formatNumber(double x, const char* spec) {
   return buf;
 }
 
+std::string formatDuration(double milliseconds) {
+  return milliseconds < 10000.0 ? formatNumber(milliseconds, "%.3g") + " ms" : formatNumber(milliseconds / 1000.0, "%.3g") + " s";
+}
+
 }  // namespace gr::filters

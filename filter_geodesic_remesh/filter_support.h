@@ -20,5 +20,7 @@ Expected<CurrentMesh> currentMesh(MeshDocument& doc);
 
 /// printf-style formatting of one number, for log lines.
 std::string formatNumber(double x, const char* spec = "%.6g");
+/// A duration for the log: "87.7 ms" under ten seconds, "23.5 s" from there on.
+std::string formatDuration(double milliseconds);
 
 }  // namespace gr::filters

@@ -180,7 +180,7 @@ Status remeshToNewLayer(MeshDocument& doc, const CurrentMesh& current, const Rem
   ctx.log("Hausdorff distance to the input (one-sided): " + formatNumber(100 * there.max / diag, "%.3f") +
           " % of the bounding-box diagonal; two-sided " + formatNumber(100 * std::max(there.max, back.max) / diag, "%.3f") +
           " %, RMS " + formatNumber(100 * rms / diag, "%.3f") + " %");
-  ctx.log("Time: " + formatNumber(ms, "%.4g") + " ms");
+  ctx.log("Time: " + formatDuration(ms));
   return Status::ok();
 }
 

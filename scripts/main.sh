@@ -33,7 +33,7 @@ run() {  # run <script.mlx> <output.ply> <what the output holds>
   # labels with no line break, so a run of them can prefix the next log line: a label directly
   # followed by a letter (the next label or log line, with no space) is cut.
   echo "$log" | grep -vE "^LOG: |XDG_RUNTIME_DIR|no additional memory|^Loading Plugins|^Total [0-9]+ (filtering|io)|Current Plugins Dir|^$" |
-    sed -E ':a; s/^(Farthest point sampling|Fast marching|Geodesic Delaunay repair|Relaxation|Curvature)([A-Za-z])/\2/; ta' | sed 's/^/  /'
+    sed -E ':a; s/^(Farthest point sampling|Fast marching|Geodesic Delaunay repair|Relaxation|Curvature|Surface distance)([A-Za-z])/\2/; ta' | sed 's/^/  /'
   echo "== exit code $rc"
   [ $rc -eq 0 ] && [ -s "$out" ] || { echo "main: meshlabserver failed" >&2; exit 1; }
   local nv nf

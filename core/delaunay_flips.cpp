@@ -30,13 +30,19 @@ double angleAt(const Vec3& p, const Vec3& q, const Vec3& r) {
   return std::atan2(u.cross(w).norm(), u.dot(w));
 }
 
-/// Unit normal of (p, q, r), or zero when the triangle is degenerate (area tiny against its
-/// squared longest edge).
+constexpr double kCapAngle = 179.0 * M_PI / 180.0;
+
+/// Unit normal of (p, q, r), or zero when the triangle is too flat for its normal to mean
+/// anything: twice its area under 1e-4 times its squared longest edge (its largest angle within
+/// about 0.01 degree of 180). Three samples on one straight line of the input (a crease, an edge
+/// of a subdivided face) stored in MeshLab's floats are off the line by rounding only, so such a
+/// cap's normal points anywhere around the line; it must neither block the flip that removes the
+/// cap (as a crease would) nor be created by one.
 Vec3 unitNormal(const Vec3& p, const Vec3& q, const Vec3& r) {
   const Vec3 n = (q - p).cross(r - p);
   const double scale = std::max({(q - p).squaredNorm(), (r - q).squaredNorm(), (p - r).squaredNorm()});
   const double len = n.norm();
-  return len > 1e-12 * scale ? Vec3(n / len) : Vec3::Zero();
+  return len > 1e-4 * scale ? Vec3(n / len) : Vec3::Zero();
 }
 
 }  // namespace
@@ -80,7 +86,8 @@ DelaunayFlipResult flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& param
     const Vec3 &px = pos[x], &pa = pos[a], &pb = pos[b], &py = pos[y];
     // Two acute facing angles sum to less than pi: locally Delaunay without the arc tangents.
     if (tolerance >= 0.0 && (pa - px).dot(pb - px) > 0.0 && (pb - py).dot(pa - py) > 0.0) continue;
-    const double facing = angleAt(px, pa, pb) + angleAt(py, pb, pa);
+    const double atX = angleAt(px, pa, pb), atY = angleAt(py, pb, pa);
+    const double facing = atX + atY;
     if (facing <= M_PI + tolerance) continue;  // locally Delaunay
     if (isNeighbour(mesh, c, y)) continue;  // (x, y) is already an edge
     // Feature and orientation checks: both old and new pairs nearly coplanar, same side up.
@@ -88,7 +95,11 @@ DelaunayFlipResult flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& param
     const Vec3 m1 = unitNormal(px, pa, py), m2 = unitNormal(px, py, pb);
     if (m1.isZero() || m2.isZero()) continue;
     if (m1.dot(m2) < cosFeature) continue;
-    if (!n1.isZero() && !n2.isZero() && n1.dot(n2) < cosFeature) continue;
+    // A cap (x, or y, within a degree of the line through a and b) is no feature: flipping it
+    // away moves the surface by less than its own height, and its normal only says on which
+    // side of the line rounding or a crease put x.
+    const bool cap = atX > kCapAngle || atY > kCapAngle;
+    if (!cap && !n1.isZero() && !n2.isZero() && n1.dot(n2) < cosFeature) continue;
     const Vec3 before = (pa - px).cross(pb - px) + (pb - py).cross(pa - py);
     if (m1.dot(before) <= 0.0 || m2.dot(before) <= 0.0) continue;
     // The flip must make the edge Delaunay: the new facing angles (at a and b) sum to less.

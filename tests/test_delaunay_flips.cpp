@@ -165,6 +165,43 @@ TEST(DelaunayFlips, CreaseIsKept) {
   EXPECT_LT(creaseEdgesLeft(unchecked, n), n);
 }
 
+/// Largest angle of any face, in degrees.
+double largestAngleDegrees(const TriMesh& m) {
+  double largest = 0.0;
+  for (const Tri& t : m.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 u = m.positions[t[(k + 1) % 3]] - m.positions[t[k]], w = m.positions[t[(k + 2) % 3]] - m.positions[t[k]];
+      largest = std::max(largest, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI);
+    }
+  return largest;
+}
+
+// A cap: x on the segment ab up to a rounding-sized offset out of the plane, as three samples on
+// one straight line of the input give after MeshLab's floats (seen on armadillo subdivided three
+// times, adaptive remesh to 100k: 204 such faces). Its normal is perpendicular to the plane of
+// its neighbours, which used to read as a crease and block the flip; the flip removes the cap.
+TEST(DelaunayFlips, CapIsFlippedAway) {
+  //        c
+  //      /   \    faces (x, b, c) and (a, x, c)
+  //     a--x--b    (a, b, x) is the cap; the plane is z = 0, x is lifted
+  //      \   /    face (a, y, b)
+  //        y
+  // Lifted by rounding (1e-6) or by half a degree (0.005: the cap's normal is then well defined,
+  // at right angles to its neighbours').
+  for (const double lift : {0.0, 1e-6, -1e-6, 0.005, -0.005}) {
+    SCOPED_TRACE(lift);
+    const std::vector<Vec3> p = {{0, 0, 0}, {2, 0, 0}, {1, 0, lift}, {1, -1, 0}, {1, 1, 0}};
+    const int a = 0, b = 1, x = 2, y = 3, c = 4;
+    TriMesh m = buildTriMesh(p, {{a, y, b}, {a, b, x}, {x, b, c}, {a, x, c}}).value();
+    ASSERT_GT(largestAngleDegrees(m), 179.4);
+    EXPECT_GE(flipToDelaunay(m).flips, 1);
+    EXPECT_LT(largestAngleDegrees(m), 91.0);
+    EXPECT_EQ(m.faceCount(), 4);
+    EXPECT_EQ(m.topology.inconsistentEdges, 0);
+    EXPECT_EQ(m.topology.boundaryLoops, 1);
+  }
+}
+
 TEST(DelaunayFlips, NonManifoldMeshIsLeftAlone) {
   // Three faces on one edge.
   std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}};

@@ -59,7 +59,7 @@
 namespace {
 
 using gr::bench::SurfaceMesh;
-using gr::bench::threadSeconds;
+using gr::bench::cpuSeconds;
 
 constexpr double kStrength = 16.0;      ///< mu of the Attractive mapping
 constexpr double kRadiusInEdges = 2.0;  ///< curvature ball radius, in mean edge lengths
@@ -153,14 +153,14 @@ gr::Expected<Run> remesh(const gr::TriMesh& mesh, const gr::Metric& metric, int 
   Run run;
   gr::FpsParams fps;
   fps.targetCount = target;
-  const double t0 = threadSeconds();
+  const double t0 = cpuSeconds();
   gr::FastMarcher marcher(mesh, metric);
-  const double t1 = threadSeconds();
+  const double t1 = cpuSeconds();
   gr::Expected<gr::FpsResult> s = gr::farthestPointSampling(marcher, fps);
-  const double t2 = threadSeconds();
+  const double t2 = cpuSeconds();
   if (!s) return gr::Status{s.status().code, "sampling: " + s.status().message};
   gr::Expected<gr::DelaunayResult> d = gr::geodesicDelaunay(marcher, std::move(s->points));
-  const double t3 = threadSeconds();
+  const double t3 = cpuSeconds();
   if (!d) return gr::Status{d.status().code, "triangulation: " + d.status().message};
   run.result = std::move(*d);
   run.seconds.engine = t1 - t0;
@@ -172,17 +172,17 @@ gr::Expected<Run> remesh(const gr::TriMesh& mesh, const gr::Metric& metric, int 
 /// Curvature + speed + the pipeline: what the adaptive filter computes.
 gr::Expected<Run> remeshAdaptive(const gr::TriMesh& mesh, int target, gr::Metric* metricOut = nullptr,
                                   double radiusInEdges = kRadiusInEdges) {
-  const double t0 = threadSeconds();
+  const double t0 = cpuSeconds();
   gr::CurvatureParams cp;
   cp.radius = radiusInEdges * mesh.meanEdgeLength();
   gr::Expected<gr::CurvatureResult> tau = gr::totalCurvature(mesh, cp);
-  const double t1 = threadSeconds();
+  const double t1 = cpuSeconds();
   if (!tau) return gr::Status{tau.status().code, "curvature: " + tau.status().message};
   gr::SpeedFieldParams sp;
   sp.mapping = gr::SpeedMapping::Attractive;
   sp.strength = kStrength;
   gr::Expected<gr::SpeedFieldResult> speed = gr::speedFromField(mesh, tau->tau, sp);
-  const double t2 = threadSeconds();
+  const double t2 = cpuSeconds();
   if (!speed) return gr::Status{speed.status().code, "speed: " + speed.status().message};
   gr::Expected<Run> run = remesh(mesh, speed->metric, target);
   if (!run) return run;

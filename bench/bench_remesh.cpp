@@ -64,7 +64,7 @@
 namespace {
 
 using gr::bench::SurfaceMesh;
-using gr::bench::threadSeconds;
+using gr::bench::cpuSeconds;
 
 constexpr int kCgalIterations = 3;   ///< isotropic_remeshing's number_of_iterations
 constexpr int kCalibrationRuns = 3;  ///< untimed CGAL runs to match the vertex count
@@ -147,17 +147,17 @@ std::optional<OursRun> runOurs(benchmark::State& state, const BenchMesh& bm, int
   params.targetCount = target;
   params.subVertexPlacement = variant.subVertex;
   OursRun run;
-  const double t0 = threadSeconds();
+  const double t0 = cpuSeconds();
   gr::FastMarcher marcher(bm.tri, metric);
-  const double t1 = threadSeconds();
+  const double t1 = cpuSeconds();
   gr::Expected<gr::FpsResult> s = gr::farthestPointSampling(marcher, params);
-  const double t2 = threadSeconds();
+  const double t2 = cpuSeconds();
   if (!s) {
     state.SkipWithError(("sampling: " + s.status().message).c_str());
     return std::nullopt;
   }
   gr::Expected<gr::DelaunayResult> d = gr::geodesicDelaunay(marcher, std::move(s->points));
-  const double t3 = threadSeconds();
+  const double t3 = cpuSeconds();
   if (!d) {
     state.SkipWithError(("triangulation: " + d.status().message).c_str());
     return std::nullopt;
@@ -165,7 +165,7 @@ std::optional<OursRun> runOurs(benchmark::State& state, const BenchMesh& bm, int
   gr::RelaxationParams relax;
   relax.iterations = variant.relaxation;
   gr::Expected<gr::RelaxationResult> r = gr::relaxOnSurface(d->mesh, d->samplePoint, bm.tri, relax);
-  const double t4 = threadSeconds();
+  const double t4 = cpuSeconds();
   if (!r) {
     state.SkipWithError(("relaxation: " + r.status().message).c_str());
     return std::nullopt;

@@ -20,8 +20,9 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using SmVertex = SurfaceMesh::Vertex_index;
 
-/// CPU time of the calling thread, in seconds (the machine may be shared).
-double threadSeconds();
+/// CPU time of the whole process, all its threads, in seconds: what the code costs on one core
+/// (the machine may be shared, so not wall time; the engine's constructor runs a helper thread).
+double cpuSeconds();
 
 /// A mesh of GR_MESH_DIR ("bunny00.off"), after `subdivisions` 1-to-4 midpoint subdivisions.
 Expected<TriMesh> loadBenchMesh(const std::string& file, int subdivisions = 0);

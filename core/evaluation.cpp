@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -116,7 +117,11 @@ SurfaceDistance surfaceDistance(const TriMesh& from, const TriMesh& to, Progress
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
   const long threads = std::min<long>(blocks, maxThreads > 0 ? maxThreads : hardware);
   std::vector<std::thread> helpers;
-  for (long i = 1; i < threads; ++i) helpers.emplace_back(work, false);
+  try {
+    for (long i = 1; i < threads; ++i) helpers.emplace_back(work, false);
+  } catch (const std::system_error&) {
+    // No more threads to be had: the ones started and this one share the blocks.
+  }
   work(true);
   for (std::thread& t : helpers) t.join();
   double sumSq = 0.0;

@@ -28,8 +28,10 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh
   const int nv = mesh.vertexCount();
   // The acute splits (a fifth of the construction) on a second thread, while this one orders
   // the vertices; they are first needed by the star records. The same result either way.
-  // (std::async: an exception in it reaches get(), and the future waits for it if this throws.)
-  std::future<AcuteSplits> splitter = std::async(std::launch::async, [&mesh] { return findAcuteSplits(mesh); });
+  // (std::async: an exception in it reaches get(), and the future waits for it if this throws;
+  // with deferred allowed too, libstdc++ runs it in get() when no thread can be started.)
+  std::future<AcuteSplits> splitter =
+      std::async(std::launch::async | std::launch::deferred, [&mesh] { return findAcuteSplits(mesh); });
   const std::vector<std::array<int, 2>> others = starNeighbours(mesh);  // read contiguously below
   // Slots: the vertices in breadth-first order, so a front touches nearby memory.
   slotOf_.assign(nv, -1);

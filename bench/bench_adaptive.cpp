@@ -46,15 +46,15 @@
 #include <vector>
 
 #include "bench/bench_support.h"
-#include "core/curvature.h"
-#include "core/evaluation.h"
-#include "core/farthest_point_sampling.h"
-#include "core/fast_marching.h"
-#include "core/geodesic_delaunay.h"
-#include "core/metric.h"
-#include "core/speed_field.h"
-#include "core/tri_mesh.h"
-#include "core/vcg_mesh.h"
+#include "core/field/curvature.h"
+#include "core/measure/evaluation.h"
+#include "core/geodesic/farthest_point_sampling.h"
+#include "core/geodesic/fast_marching.h"
+#include "core/remesh/geodesic_delaunay.h"
+#include "core/geodesic/metric.h"
+#include "core/field/speed_field.h"
+#include "core/mesh/tri_mesh.h"
+#include "core/mesh/vcg_mesh.h"
 
 namespace {
 

@@ -38,9 +38,9 @@
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include "bench/bench_support.h"
-#include "core/curvature.h"
-#include "core/tri_mesh.h"
-#include "core/vcg_mesh.h"
+#include "core/field/curvature.h"
+#include "core/mesh/tri_mesh.h"
+#include "core/mesh/vcg_mesh.h"
 
 namespace {
 

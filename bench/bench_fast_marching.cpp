@@ -47,11 +47,11 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
-#include "core/fast_marching.h"
-#include "core/metric.h"
-#include "core/tri_mesh.h"
-#include "core/subdivide.h"
-#include "core/vcg_mesh.h"
+#include "core/geodesic/fast_marching.h"
+#include "core/geodesic/metric.h"
+#include "core/mesh/tri_mesh.h"
+#include "core/mesh/subdivide.h"
+#include "core/mesh/vcg_mesh.h"
 
 namespace {
 

@@ -3,7 +3,7 @@
 //
 //   Ours/<mesh>/<target>  FastMarcher construction + farthestPointSampling + geodesicDelaunay +
 //                         relaxOnSurface (3 rounds) on one engine: the stages of gr::remesh
-//                         (core/remesh.h), as the uniform filter runs them at its defaults.
+//                         (core/remesh/remesh.h), as the uniform filter runs them at its defaults.
 //                         Counters engine_ms, sampling_ms, delaunay_ms, relax_ms: each stage's
 //                         thread CPU time.
 //   OursNoRelax/...       the same without the relaxation (the paper's triangulation alone).
@@ -52,14 +52,14 @@
 #include <vector>
 
 #include "bench/bench_support.h"
-#include "core/evaluation.h"
-#include "core/farthest_point_sampling.h"
-#include "core/fast_marching.h"
-#include "core/geodesic_delaunay.h"
-#include "core/surface_relaxation.h"
-#include "core/metric.h"
-#include "core/tri_mesh.h"
-#include "core/vcg_mesh.h"
+#include "core/measure/evaluation.h"
+#include "core/geodesic/farthest_point_sampling.h"
+#include "core/geodesic/fast_marching.h"
+#include "core/remesh/geodesic_delaunay.h"
+#include "core/remesh/surface_relaxation.h"
+#include "core/geodesic/metric.h"
+#include "core/mesh/tri_mesh.h"
+#include "core/mesh/vcg_mesh.h"
 
 namespace {
 

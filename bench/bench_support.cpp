@@ -10,9 +10,9 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 
-#include "core/evaluation.h"
-#include "core/subdivide.h"
-#include "core/vcg_mesh.h"
+#include "core/measure/evaluation.h"
+#include "core/mesh/subdivide.h"
+#include "core/mesh/vcg_mesh.h"
 
 namespace gr::bench {
 

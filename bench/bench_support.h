@@ -11,8 +11,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
-#include "core/status.h"
-#include "core/tri_mesh.h"
+#include "core/base/status.h"
+#include "core/mesh/tri_mesh.h"
 
 namespace gr::bench {
 

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "core/color_gradient.h"
-#include "core/curvature.h"
-#include "core/speed_field.h"
+#include "core/field/color_gradient.h"
+#include "core/field/curvature.h"
+#include "core/field/speed_field.h"
 #include "filter_geodesic_remesh/parameter_names.h"
 #include "filter_geodesic_remesh/remesh_pipeline.h"
 #include "vcg_adapters/cmesho_adapter.h"

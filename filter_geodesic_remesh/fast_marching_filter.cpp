@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/fast_marching.h"
+#include "core/geodesic/fast_marching.h"
 #include "filter_geodesic_remesh/filter_support.h"
 #include "filter_geodesic_remesh/parameter_names.h"
 #include "vcg_adapters/cmesho_adapter.h"

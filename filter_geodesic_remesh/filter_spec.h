@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "core/progress.h"
-#include "core/status.h"
+#include "core/base/progress.h"
+#include "core/base/status.h"
 
 namespace gr::filters {
 

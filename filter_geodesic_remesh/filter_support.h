@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "core/status.h"
+#include "core/base/status.h"
 #include "vcg_adapters/cmesho_adapter.h"
 
 namespace gr::filters {

@@ -5,9 +5,9 @@
 #include <optional>
 #include <string>
 
-#include "core/evaluation.h"
-#include "core/remesh.h"
-#include "core/subdivide.h"
+#include "core/measure/evaluation.h"
+#include "core/remesh/remesh.h"
+#include "core/mesh/subdivide.h"
 #include "filter_geodesic_remesh/parameter_names.h"
 #include "vcg_adapters/cmesho_adapter.h"
 

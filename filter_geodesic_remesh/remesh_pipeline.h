@@ -1,13 +1,13 @@
 // The remeshing pipeline both remeshing filters share (paper §3.1-3.4): farthest-point samples
-// under a metric, their geodesic Delaunay triangulation, its relaxation (core/remesh.h), a new
+// under a metric, their geodesic Delaunay triangulation, its relaxation (core/remesh/remesh.h), a new
 // layer, and the log.
 #pragma once
 
 #include <chrono>
 #include <string>
 
-#include "core/farthest_point_sampling.h"
-#include "core/metric.h"
+#include "core/geodesic/farthest_point_sampling.h"
+#include "core/geodesic/metric.h"
 #include "filter_geodesic_remesh/filter_spec.h"
 #include "filter_geodesic_remesh/filter_support.h"
 

@@ -6,7 +6,7 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
 
-#include "core/color_gradient.h"
+#include "core/field/color_gradient.h"
 
 namespace gr::adapters {
 

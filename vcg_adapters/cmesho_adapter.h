@@ -9,10 +9,10 @@
 
 #include <vector>
 
-#include "core/fast_marching.h"
-#include "core/status.h"
-#include "core/tri_mesh.h"
-#include "core/vcg_convert.h"
+#include "core/mesh/surface_point.h"
+#include "core/base/status.h"
+#include "core/mesh/tri_mesh.h"
+#include "core/mesh/vcg_convert.h"
 
 namespace gr::adapters {
 

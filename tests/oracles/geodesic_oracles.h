@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/tri_mesh.h"
+#include "core/mesh/tri_mesh.h"
 
 namespace gr::oracle {
 

@@ -1,0 +1,17 @@
+#include "core/base/status.h"
+
+namespace gr {
+
+const char* toString(StatusCode code) {
+  switch (code) {
+    case StatusCode::Ok: return "Ok";
+    case StatusCode::InvalidInput: return "InvalidInput";
+    case StatusCode::NonManifold: return "NonManifold";
+    case StatusCode::Degenerate: return "Degenerate";
+    case StatusCode::NotConverged: return "NotConverged";
+    case StatusCode::Cancelled: return "Cancelled";
+  }
+  return "Unknown";
+}
+
+}  // namespace gr

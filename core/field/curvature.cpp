@@ -1,0 +1,300 @@
+#include "core/field/curvature.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+namespace gr {
+namespace {
+
+/// What one vertex's cell carries: half of beta |e| ê êᵀ of each incident edge (symmetric, 6
+/// entries xx xy xz yy yz zz) and a third of the area of each incident face. 64 bytes: one cache
+/// line per vertex summed into a ball.
+struct CellMass {
+  double t[6] = {0, 0, 0, 0, 0, 0};
+  double area = 0.0;
+  double padding = 0.0;
+};
+
+/// What the flood fill reads of every vertex it looks at: the position and the width of the
+/// weight's ramp, sqrt(cell area). 32 bytes.
+struct CellPoint {
+  double x = 0, y = 0, z = 0;
+  double size = 0;
+};
+
+/// The mesh as the balls read it, in a local vertex order: the order in which the faces first
+/// reach each vertex. Face order is usually spatially coherent (scans, and gr::subdivideMidpoint,
+/// which numbers the 4 children of face f 4f..4f+3), vertex order often is not (subdivision
+/// numbers new vertices level by level): renumbered, a ball's vertices are near each other in
+/// memory, and every pass below reads the mesh sequentially.
+struct LocalMesh {
+  std::vector<int> original;      ///< local index -> mesh vertex
+  std::vector<int> begin, list;   ///< neighbours (local indices), CSR; each neighbour once
+  std::vector<CellPoint> point;   ///< local index -> position and ramp width
+  std::vector<CellMass> mass;     ///< local index -> tensor and area of the cell
+  std::vector<Vec3> normal;       ///< local index -> area-weighted normal (not normalised)
+  double meanEdgeLength = 0.0;    ///< as TriMesh::meanEdgeLength(), same sums in the same order
+};
+
+LocalMesh buildLocalMesh(const TriMesh& mesh) {
+  const int n = mesh.vertexCount();
+  const int nf = mesh.faceCount();
+  LocalMesh local;
+  std::vector<int> rank(n, -1);
+  std::vector<std::array<int, 3>> localTri(nf);
+  local.original.reserve(n);
+  local.point.reserve(n);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int x = mesh.triangles[f][k];
+      if (rank[x] < 0) {
+        rank[x] = static_cast<int>(local.original.size());
+        local.original.push_back(x);
+        const Vec3& p = mesh.positions[x];
+        local.point.push_back({p.x(), p.y(), p.z(), 0.0});
+      }
+      localTri[f][k] = rank[x];
+    }
+  for (int x = 0; x < n; ++x)  // isolated vertices last
+    if (rank[x] < 0) {
+      rank[x] = static_cast<int>(local.original.size());
+      local.original.push_back(x);
+      const Vec3& p = mesh.positions[x];
+      local.point.push_back({p.x(), p.y(), p.z(), 0.0});
+    }
+  const std::vector<CellPoint>& point = local.point;
+  auto edge = [&](int from, int to) {
+    return Vec3(point[to].x - point[from].x, point[to].y - point[from].y, point[to].z - point[from].z);
+  };
+
+  // Faces: a third of the area to each vertex, normals, the mean edge length.
+  local.mass.assign(n, CellMass{});
+  local.normal.assign(n, Vec3::Zero());
+  std::vector<Vec3> faceNormal(nf);
+  double edgeSum = 0.0;
+  for (int f = 0; f < nf; ++f) {
+    const std::array<int, 3>& t = localTri[f];
+    for (int k = 0; k < 3; ++k) edgeSum += edge(t[(k + 1) % 3], t[k]).norm();
+    const Vec3 cross = edge(t[0], t[1]).cross(edge(t[0], t[2]));
+    const double norm = cross.norm();
+    faceNormal[f] = norm > 0.0 ? Vec3(cross / norm) : Vec3::Zero();
+    for (int k = 0; k < 3; ++k) {
+      local.mass[t[k]].area += norm / 6.0;
+      local.normal[t[k]] += cross;
+    }
+  }
+  local.meanEdgeLength = edgeSum / (3.0 * nf);
+
+  // Edges: half of beta |e| ê êᵀ to each end. Neighbours: the vertex after each corner in its
+  // face, and the one before when the edge to it is not shared consistently with another face
+  // (there, no other face has it after the corner).
+  std::vector<int> degree(n, 0);
+  auto reachedBefore = [&](int c) {  // is the edge (prev(c), V(c)) shared consistently?
+    const int o = mesh.oppositeCorner[TriMesh::next(c)];
+    return o >= 0 && mesh.vertex(TriMesh::next(o)) == mesh.vertex(c);
+  };
+  for (int c = 0; c < 3 * nf; ++c) {
+    degree[localTri[TriMesh::face(c)][c % 3]] += reachedBefore(c) ? 1 : 2;
+    const int o = mesh.oppositeCorner[c];
+    if (o < c) continue;  // boundary (-1), non-manifold (-2), or the pair seen from the other side
+    const Vec3& n1 = faceNormal[TriMesh::face(c)];
+    Vec3 n2 = faceNormal[TriMesh::face(o)];
+    if (n1.squaredNorm() == 0.0 || n2.squaredNorm() == 0.0) continue;  // zero-area face: no angle
+    if (mesh.vertex(TriMesh::next(o)) == mesh.vertex(TriMesh::next(c))) n2 = -n2;  // faces disagree on orientation
+    const int la = localTri[TriMesh::face(c)][(c + 1) % 3], lb = localTri[TriMesh::face(c)][(c + 2) % 3];
+    const Vec3 e = edge(la, lb);
+    const double length = e.norm();
+    if (length == 0.0) continue;
+    // Convex (normal turning towards the direction of travel from f into g): (n1 x n2) . e > 0.
+    const double beta = std::atan2(n1.cross(n2).dot(e) / length, n1.dot(n2));
+    const double s = beta / (2.0 * length);  // half of beta |e| ê êᵀ = beta / (2 |e|) e eᵀ
+    const double m[6] = {s * e.x() * e.x(), s * e.x() * e.y(), s * e.x() * e.z(),
+                         s * e.y() * e.y(), s * e.y() * e.z(), s * e.z() * e.z()};
+    CellMass& ma = local.mass[la];
+    CellMass& mb = local.mass[lb];
+    for (int k = 0; k < 6; ++k) {
+      ma.t[k] += m[k];
+      mb.t[k] += m[k];
+    }
+  }
+  for (int v = 0; v < n; ++v) local.point[v].size = std::sqrt(local.mass[v].area);
+
+  local.begin.assign(n + 1, 0);
+  for (int v = 0; v < n; ++v) local.begin[v + 1] = local.begin[v] + degree[v];
+  local.list.resize(local.begin[n]);
+  std::vector<int> fill(local.begin.begin(), local.begin.end() - 1);
+  for (int c = 0; c < 3 * nf; ++c) {
+    const std::array<int, 3>& t = localTri[TriMesh::face(c)];
+    const int v = t[c % 3];
+    local.list[fill[v]++] = t[(c + 1) % 3];
+    if (!reachedBefore(c)) local.list[fill[v]++] = t[(c + 2) % 3];
+  }
+  // Boundaries, non-manifold edges and orientation flips can list a neighbour twice.
+  if (mesh.topology.boundaryEdges > 0 || !mesh.topology.isManifold() || mesh.topology.inconsistentEdges > 0) {
+    int at = 0;
+    for (int v = 0; v < n; ++v) {
+      const int first = at;
+      for (int i = local.begin[v]; i < local.begin[v + 1]; ++i) {
+        const int x = local.list[i];
+        if (std::find(local.list.begin() + first, local.list.begin() + at, x) == local.list.begin() + at)
+          local.list[at++] = x;
+      }
+      local.begin[v] = first;
+    }
+    local.begin[n] = at;
+    local.list.resize(at);
+  }
+  return local;
+}
+
+/// Index of the eigenvalue (of the sorted `lambda` of `tensor`) whose eigenvector is closest to
+/// `normal`, without computing eigenvectors: with n the unit normal, the squared cosine of n with
+/// the eigenvector e_i is (n . e_i)^2 = nᵀ (T - l_j)(T - l_k) n / ((l_i - l_j)(l_i - l_k)), and
+/// nᵀ (T - l_j)(T - l_k) n = |T n|^2 - (l_j + l_k) nᵀ T n + l_j l_k. Two eigenvalues closer than
+/// 1e-6 of the largest form one eigenspace (dropping either changes tau by less than the gap);
+/// its share of n is 1 minus the third's. Without a normal: the eigenvalue of smallest magnitude.
+int droppedEigenvalue(const Eigen::Matrix3d& tensor, const Eigen::Vector3d& lambda, const Vec3& normal) {
+  const double scale = lambda.cwiseAbs().maxCoeff();
+  const double nn = normal.norm();
+  int dropped = 0;
+  if (!(nn > 0.0) || !(scale > 0.0)) {
+    lambda.cwiseAbs().minCoeff(&dropped);
+    return dropped;
+  }
+  const Vec3 n = normal / nn;
+  const Vec3 tn = tensor * n;
+  const double b = n.dot(tn), c = tn.squaredNorm();
+  auto share = [&](int i, int j, int k) {
+    return (c - (lambda[j] + lambda[k]) * b + lambda[j] * lambda[k]) /
+           ((lambda[i] - lambda[j]) * (lambda[i] - lambda[k]));
+  };
+  const double tolerance = 1e-6 * scale;
+  const bool lowPair = lambda[1] - lambda[0] < tolerance, highPair = lambda[2] - lambda[1] < tolerance;
+  if (lowPair && highPair) return 0;
+  if (lowPair) return share(2, 0, 1) > 0.5 ? 2 : 0;
+  if (highPair) return share(0, 1, 2) > 0.5 ? 0 : 2;
+  const double w0 = share(0, 1, 2), w1 = share(1, 0, 2), w2 = share(2, 0, 1);
+  return w0 >= w1 ? (w0 >= w2 ? 0 : 2) : (w1 >= w2 ? 1 : 2);
+}
+
+double squaredDistance(const CellPoint& a, const CellPoint& b) {
+  const double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+  return dx * dx + dy * dy + dz * dz;
+}
+
+}  // namespace
+
+Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvatureParams& params, Progress progress) {
+  const int n = mesh.vertexCount();
+  if (n == 0 || mesh.faceCount() == 0) return invalidInput("the mesh has no vertices or no faces");
+  if (mesh.oppositeCorner.size() != 3 * mesh.triangles.size() ||
+      mesh.vertexCornerBegin.size() != static_cast<size_t>(n) + 1)
+    return invalidInput("the mesh has no adjacency (build it with buildTriMesh)");
+  if (!std::isfinite(params.radius) || params.radius < 0.0)
+    return invalidInput("the curvature radius must be finite and >= 0 (0 = the mean edge length), got " +
+                        std::to_string(params.radius));
+  const LocalMesh local = buildLocalMesh(mesh);
+  const double radius = params.radius > 0.0 ? params.radius : local.meanEdgeLength;
+  const std::vector<int>& begin = local.begin;
+  const std::vector<int>& list = local.list;
+  const std::vector<CellPoint>& point = local.point;
+
+  CurvatureResult result;
+  result.radius = radius;
+  result.tau.assign(n, 0.0);
+  result.k1.assign(n, 0.0);
+  result.k2.assign(n, 0.0);
+
+  std::vector<int> seenBy(n, -1);  // seenBy[u] == v: u was looked at in v's ball
+  std::vector<int> queue;
+  std::vector<double> weight;      // parallel to queue
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  long totalSize = 0;
+  for (int v = 0; v < n; ++v) {
+    if ((v & 4095) == 0 && !progress.report(double(v) / n, "Curvature")) return cancelled();
+    if (begin[v] == begin[v + 1]) continue;  // isolated vertex
+    const CellPoint pv = point[v];
+    // The 1-ring: its distances give the ball's radius, the requested one or the 1-ring's (mean
+    // distance to the neighbours).
+    queue.clear();
+    weight.clear();
+    seenBy[v] = v;
+    queue.push_back(v);
+    weight.push_back(1.0);
+    double ringRadius = 0.0;
+    for (int i = begin[v]; i < begin[v + 1]; ++i) {
+      const int x = list[i];
+      seenBy[x] = v;
+      const double d = std::sqrt(squaredDistance(point[x], pv));
+      ringRadius += d;
+      queue.push_back(x);
+      weight.push_back(d);  // the distance, turned into the weight below
+    }
+    ringRadius /= begin[v + 1] - begin[v];
+    const double r = std::max(radius, ringRadius);
+    if (radius <= ringRadius) ++result.oneRingRadius;
+    // Weights w = clamp(1/2 + (r - d) / s, 0, 1): positive for d < r + s / 2 (d < r where s = 0).
+    auto weightAt = [r](double d, double size) {
+      return size > 0.0 ? std::min(1.0, 0.5 + (r - d) / size) : (d < r ? 1.0 : 0.0);
+    };
+    size_t kept = 1;
+    for (size_t i = 1; i < queue.size(); ++i) {
+      const double w = weightAt(weight[i], point[queue[i]].size);
+      if (!(w > 0.0)) continue;
+      queue[kept] = queue[i];
+      weight[kept++] = w;
+    }
+    queue.resize(kept);
+    weight.resize(kept);
+    // Flood fill on from the 1-ring through the vertices of positive weight.
+    for (size_t head = 1; head < queue.size(); ++head) {
+      const int u = queue[head];
+      for (int i = begin[u]; i < begin[u + 1]; ++i) {
+        const int x = list[i];
+        if (seenBy[x] == v) continue;
+        seenBy[x] = v;
+        const CellPoint& px = point[x];
+        const double reach = r + 0.5 * px.size;
+        const double d2 = squaredDistance(px, pv);
+        if (!(d2 < reach * reach)) continue;
+        const double w = weightAt(std::sqrt(d2), px.size);
+        if (!(w > 0.0)) continue;
+        queue.push_back(x);
+        weight.push_back(w);
+      }
+    }
+    totalSize += static_cast<long>(queue.size());
+
+    double t[6] = {0, 0, 0, 0, 0, 0};
+    double area = 0.0;
+    for (size_t i = 0; i < queue.size(); ++i) {
+      const CellMass& cm = local.mass[queue[i]];
+      const double w = weight[i];
+      for (int k = 0; k < 6; ++k) t[k] += w * cm.t[k];
+      area += w * cm.area;
+    }
+    if (!(area > 0.0)) continue;  // only zero-area faces around: no curvature
+    Eigen::Matrix3d tensor;
+    tensor << t[0], t[1], t[2], t[1], t[3], t[4], t[2], t[4], t[5];
+    tensor /= area;
+    solver.computeDirect(tensor, Eigen::EigenvaluesOnly);
+    const Eigen::Vector3d lambda = solver.eigenvalues();
+    const int dropped = droppedEigenvalue(tensor, lambda, local.normal[v]);
+    double a = lambda[(dropped + 1) % 3], b = lambda[(dropped + 2) % 3];
+    if (std::abs(a) < std::abs(b)) std::swap(a, b);
+    const int original = local.original[v];
+    result.k1[original] = a;
+    result.k2[original] = b;
+    result.tau[original] = std::abs(a) + std::abs(b);
+  }
+  result.meanNeighbourhoodSize = double(totalSize) / n;
+  progress.report(1.0, "Curvature");
+  return result;
+}
+
+}  // namespace gr

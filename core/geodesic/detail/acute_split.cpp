@@ -1,0 +1,90 @@
+#include "core/geodesic/detail/acute_split.h"
+
+#include <cmath>
+
+#include "core/geodesic/detail/unfold.h"
+
+namespace gr {
+namespace {
+
+/// The corner of the face of `corner` whose vertex is v.
+int cornerAt(const TriMesh& m, int corner, int v) {
+  const int base = corner - corner % 3;
+  for (int k = 0; k < 3; ++k)
+    if (m.vertex(base + k) == v) return base + k;
+  return -1;
+}
+
+bool findSplit(const TriMesh& m, int c, int maxUnfoldings, AcuteSplit& out) {
+  const int x = m.vertex(c), a = m.vertex(TriMesh::next(c)), b = m.vertex(TriMesh::prev(c));
+  const Vec3& px = m.positions[x];
+  const double la = (m.positions[a] - px).norm(), lb = (m.positions[b] - px).norm();
+  if (la <= 0.0 || lb <= 0.0) return false;
+  const double cosTheta = (m.positions[a] - px).dot(m.positions[b] - px) / (la * lb);
+  if (!(cosTheta < 0.0)) return false;
+  const double theta = std::acos(std::max(-1.0, cosTheta));
+  const double halfPi = 0.5 * M_PI;
+  const Vec2 pa(la, 0.0), pb(lb * std::cos(theta), lb * std::sin(theta));
+
+  // The current edge (p: A side of the bisector, q: B side) and the corner facing it.
+  int pVert = a, qVert = b, facing = c;
+  Vec2 p = pa, q = pb, third(0.0, 0.0);
+  for (int step = 0; step < maxUnfoldings; ++step) {
+    const int d = m.oppositeCorner[facing];
+    if (d < 0) return false;  // boundary or non-manifold edge
+    const int r = m.vertex(d);
+    if (r == x || r == a || r == b) return false;
+    const Vec2 pr = unfold(p, q, third, (m.positions[r] - m.positions[pVert]).norm(),
+                           (m.positions[r] - m.positions[qVert]).norm());
+    const double phi = std::atan2(pr.y(), pr.x());
+    if (phi > theta - halfPi && phi < halfPi && phi > 0.0 && phi < theta) {
+      out = {c, r, pr.norm(), (pr - pa).norm(), (pr - pb).norm(), la, lb};
+      return true;
+    }
+    // Continue across the edge of triangle (p, q, r) that the bisector leaves through.
+    if (phi < 0.5 * theta) {  // r is on the A side: the bisector exits through (r, q)
+      facing = cornerAt(m, d, pVert);
+      third = p;
+      p = pr;
+      pVert = r;
+    } else {
+      facing = cornerAt(m, d, qVert);
+      third = q;
+      q = pr;
+      qVert = r;
+    }
+    if (facing < 0) return false;
+  }
+  return false;
+}
+
+}  // namespace
+
+AcuteSplits findAcuteSplits(const TriMesh& mesh, int maxUnfoldings) {
+  AcuteSplits s;
+  const int nc = 3 * mesh.faceCount();
+  s.splitOfCorner.assign(nc, -1);
+  AcuteSplit split;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {  // corner 3f + k: obtuse if its two edges point apart
+      const Vec3& px = mesh.positions[t[k]];
+      if ((mesh.positions[t[(k + 1) % 3]] - px).dot(mesh.positions[t[(k + 2) % 3]] - px) >= 0.0) continue;
+      const int c = 3 * f + k;
+      ++s.obtuseCorners;
+      if (findSplit(mesh, c, maxUnfoldings, split)) {
+        s.splitOfCorner[c] = static_cast<int>(s.splits.size());
+        s.splits.push_back(split);
+      }
+    }
+  }
+  s.byVertexBegin.assign(mesh.vertexCount() + 1, 0);
+  for (const AcuteSplit& sp : s.splits) ++s.byVertexBegin[sp.vertex + 1];
+  for (int v = 0; v < mesh.vertexCount(); ++v) s.byVertexBegin[v + 1] += s.byVertexBegin[v];
+  s.byVertex.resize(s.splits.size());
+  std::vector<int> fill(s.byVertexBegin.begin(), s.byVertexBegin.end() - 1);
+  for (int i = 0; i < static_cast<int>(s.splits.size()); ++i) s.byVertex[fill[s.splits[i].vertex]++] = i;
+  return s;
+}
+
+}  // namespace gr

@@ -1,0 +1,173 @@
+#include "core/geodesic/farthest_point_sampling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/geodesic/fast_marching.h"
+#include "core/geodesic/detail/farthest_queue.h"
+
+namespace gr {
+namespace {
+
+/// The point near interior vertex v where the model of the fronts (see the header) is largest,
+/// searched on a barycentric lattice of the faces around v and the faces across their outer
+/// edges. `samplePosition` holds the position of each label's sample. Returns v itself when no
+/// lattice point beats it; *u receives the model's value at the point.
+SurfacePoint farthestPointNear(const FastMarcher& marcher, int v, const std::vector<Vec3>& samplePosition, double* u) {
+  const TriMesh& mesh = marcher.mesh();
+  const std::vector<double>& U = marcher.distance();
+  const std::vector<int>& label = marcher.label();
+  constexpr int kMaxFaces = 64, kMaxVertices = 64;
+  int faces[kMaxFaces], nf = 0;
+  int verts[kMaxVertices], nvtx = 0;
+  const auto addVertex = [&](int w) {
+    for (int i = 0; i < nvtx; ++i)
+      if (verts[i] == w) return;
+    if (nvtx < kMaxVertices && label[w] >= 0 && std::isfinite(U[w])) verts[nvtx++] = w;
+  };
+  for (const int* c = mesh.cornersBegin(v); c != mesh.cornersEnd(v) && nf < kMaxFaces; ++c) {
+    faces[nf++] = TriMesh::face(*c);
+    const int o = mesh.oppositeCorner[*c];
+    if (o >= 0 && nf < kMaxFaces) faces[nf++] = TriMesh::face(o);
+  }
+  for (int i = 0; i < nf; ++i)
+    for (int w : mesh.triangles[faces[i]]) addVertex(w);
+  // Per vertex of the neighbourhood: its front's offset U(w) - |w - s_L|.
+  double offset[kMaxVertices];
+  for (int i = 0; i < nvtx; ++i)
+    offset[i] = U[verts[i]] - (mesh.positions[verts[i]] - samplePosition[label[verts[i]]]).norm();
+  const auto model = [&](const Vec3& p) {
+    double best = kUnreached;
+    for (int i = 0; i < nvtx; ++i) {
+      // U_L(p) for w's front; the minimum over all w is the minimum over fronts of their
+      // estimate from the nearest-in-value vertex, a safe (low) side of the model.
+      best = std::min(best, offset[i] + (p - samplePosition[label[verts[i]]]).norm());
+    }
+    return best;
+  };
+  SurfacePoint bestPoint = SurfacePoint::atVertex(v);
+  double bestU = U[v];
+  constexpr int kLattice = 4;  // points (i, j, k) / 4: 15 per face
+  for (int i = 0; i < nf; ++i) {
+    const Tri& t = mesh.triangles[faces[i]];
+    const Vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]], &p2 = mesh.positions[t[2]];
+    for (int a = 0; a <= kLattice; ++a)
+      for (int b = 0; a + b <= kLattice; ++b) {
+        const int c = kLattice - a - b;
+        if (a == kLattice || b == kLattice || c == kLattice) continue;  // vertices: U is known there
+        const Vec3 bary(double(a) / kLattice, double(b) / kLattice, double(c) / kLattice);
+        const double m = model(bary[0] * p0 + bary[1] * p1 + bary[2] * p2);
+        if (m > bestU) {
+          bestU = m;
+          bestPoint = SurfacePoint::inFace(faces[i], bary);
+        }
+      }
+  }
+  *u = bestU;
+  return bestPoint;
+}
+
+}  // namespace
+
+Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& metric, const FpsParams& params,
+                                          Progress progress) {
+  if (!metric.isUniform() && static_cast<int>(metric.P.size()) != mesh.vertexCount())
+    return invalidInput("the metric does not have one value per vertex");
+  FastMarcher marcher(mesh, metric);
+  return farthestPointSampling(marcher, params, std::move(progress));
+}
+
+Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams& params, Progress progress) {
+  const TriMesh& mesh = marcher.mesh();
+  if (params.targetCount < 0) return invalidInput("the target sample count must be >= 0");
+  if (!(params.minSpacing >= 0.0) || !std::isfinite(params.minSpacing))
+    return invalidInput("the sample spacing must be finite and >= 0");
+  if (params.targetCount == 0 && params.minSpacing == 0.0)
+    return invalidInput("give a target sample count or a spacing (both are 0)");
+  const int usable = mesh.vertexCount() - mesh.topology.isolatedVertices;
+  if (params.targetCount > usable)
+    return invalidInput("cannot place " + std::to_string(params.targetCount) + " samples on " +
+                        std::to_string(usable) + " vertices");
+  if (!(params.boundaryPriority >= 1.0) || !std::isfinite(params.boundaryPriority))
+    return invalidInput("the boundary priority must be finite and >= 1");
+  std::vector<char> onBoundary(mesh.vertexCount(), 0);
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
+    if (mesh.oppositeCorner[c] == kBoundary) onBoundary[mesh.vertex(TriMesh::next(c))] = onBoundary[mesh.vertex(TriMesh::prev(c))] = 1;
+
+  marcher.reset();
+  // Start: the vertex farthest from a seeded vertex of a face.
+  int start = static_cast<int>(params.seed % static_cast<unsigned>(mesh.vertexCount()));
+  while (mesh.valence(start) == 0) start = (start + 1) % mesh.vertexCount();
+  if (Status s = marcher.addSource(start, 0); !s) return s;
+  if (Status s = marcher.propagate(); !s) return s;
+  int first = start;
+  for (int v : marcher.acceptedOrder())
+    if (marcher.distance()[v] > marcher.distance()[first]) first = v;
+  marcher.reset();
+
+  // Components other than the start's have U = +inf: each gets a first sample (its lowest
+  // vertex) before any component gets a second one.
+  std::vector<int> firstOfComponent(mesh.topology.components, -1);
+  for (int v = mesh.vertexCount() - 1; v >= 0; --v)
+    if (mesh.topology.componentOfVertex[v] >= 0) firstOfComponent[mesh.topology.componentOfVertex[v]] = v;
+  std::vector<int> pending;
+  for (int c = 0; c < mesh.topology.components; ++c)
+    if (c != mesh.topology.componentOfVertex[first]) pending.push_back(firstOfComponent[c]);
+  std::reverse(pending.begin(), pending.end());
+
+  FpsResult r;
+  const std::vector<double>& U = marcher.distance();
+  // The farthest interior and boundary vertices. Values below the floor are still ordered
+  // exactly, only scanned more slowly (farthest_queue.h).
+  const double floor = std::max(1e-9 * mesh.boundingBoxDiagonal(), 1e-300);
+  FarthestQueue farthest(U, floor), farthestOnBoundary(U, floor);
+  const auto topU = [&U](FarthestQueue& queue) {
+    const int v = queue.top();
+    return v < 0 ? 0.0 : U[v];
+  };
+  const int cap = params.targetCount > 0 ? params.targetCount : usable;
+  int next = first;
+  double nextU = kUnreached;
+  std::vector<Vec3> samplePosition;
+  for (;;) {
+    SurfacePoint point = SurfacePoint::atVertex(next);
+    if (params.subVertexPlacement && std::isfinite(nextU) && !onBoundary[next])
+      point = farthestPointNear(marcher, next, samplePosition, &nextU);
+    r.samples.push_back(next);
+    r.points.push_back(point);
+    samplePosition.push_back(point.position(mesh));
+    r.insertionDistance.push_back(nextU);
+    if (Status s = marcher.addSource(point, static_cast<int>(r.samples.size()) - 1); !s) return s;
+    if (Status s = marcher.propagate(); !s) return s;
+    if (point.vertex < 0 && marcher.acceptedOrder().empty()) {
+      // A point that is nearest to no vertex would have an empty Voronoi cell, and no place in
+      // the triangulation: the sample goes back to the farthest vertex (the field is unchanged).
+      r.points.back() = SurfacePoint::atVertex(next);
+      samplePosition.back() = mesh.positions[next];
+      if (Status s = marcher.addSource(next, static_cast<int>(r.samples.size()) - 1); !s) return s;
+      if (Status s = marcher.propagate(); !s) return s;
+    }
+    for (int v : marcher.acceptedOrder()) (onBoundary[v] ? farthestOnBoundary : farthest).update(v);
+    if (static_cast<int>(r.samples.size()) >= cap) break;
+    if (!progress.report(double(r.samples.size()) / cap, "Farthest point sampling")) return cancelled();
+    if (!pending.empty()) {
+      next = pending.back();
+      pending.pop_back();
+      nextU = kUnreached;
+      continue;
+    }
+    const double interiorU = topU(farthest), boundaryU = topU(farthestOnBoundary);
+    if (std::max(interiorU, boundaryU) <= 0.0) break;  // every vertex is a sample
+    if (params.minSpacing > 0.0 && std::max(interiorU, boundaryU) < params.minSpacing) break;
+    const bool boundaryFirst = boundaryU > 0.0 && boundaryU * params.boundaryPriority >= interiorU;
+    next = boundaryFirst ? farthestOnBoundary.top() : farthest.top();
+    nextU = boundaryFirst ? boundaryU : interiorU;
+  }
+  r.coveringRadius = std::max(topU(farthest), topU(farthestOnBoundary));
+  r.distance = U;
+  r.region = marcher.label();
+  return r;
+}
+
+}  // namespace gr

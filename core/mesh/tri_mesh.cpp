@@ -1,0 +1,330 @@
+#include "core/mesh/tri_mesh.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <string>
+
+namespace gr {
+namespace {
+
+/// Union-find with path halving; sizes are fixed at construction.
+class DisjointSets {
+ public:
+  explicit DisjointSets(int n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  int find(int x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<int> parent_;
+};
+
+std::string formatVec(const Vec3& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", p.x(), p.y(), p.z());
+  return text;
+}
+
+Status validate(const std::vector<Vec3>& positions, const std::vector<Tri>& triangles) {
+  if (positions.empty()) return invalidInput("the mesh has no vertices");
+  if (triangles.empty())
+    return invalidInput("the mesh has no faces (" + std::to_string(positions.size()) +
+                        " vertices): a point cloud cannot carry geodesics");
+  for (size_t v = 0; v < positions.size(); ++v)
+    if (!positions[v].allFinite())
+      return invalidInput("vertex " + std::to_string(v) + " has a non-finite coordinate " +
+                          formatVec(positions[v]));
+  // Distances are computed from squared differences: they must not overflow.
+  Vec3 lo = positions[0], hi = positions[0];
+  for (const Vec3& p : positions) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  if (!std::isfinite((hi - lo).squaredNorm()))
+    return invalidInput("the coordinates are too large (bounding box " + formatVec(lo) + " to " + formatVec(hi) +
+                        "): squared distances overflow; scale the mesh down first");
+  const int n = static_cast<int>(positions.size());
+  for (size_t f = 0; f < triangles.size(); ++f) {
+    const Tri& t = triangles[f];
+    for (int k = 0; k < 3; ++k)
+      if (t[k] < 0 || t[k] >= n)
+        return invalidInput("face " + std::to_string(f) + " references vertex " + std::to_string(t[k]) +
+                            ", which does not exist");
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
+      return degenerate("face " + std::to_string(f) + " uses vertex " +
+                        std::to_string(t[0] == t[1] || t[0] == t[2] ? t[0] : t[1]) +
+                        " twice (remove duplicated vertices and zero-area faces first)");
+  }
+  return Status::ok();
+}
+
+}  // namespace
+
+void rebuildVertexCorners(TriMesh& m) {
+  const int nv = m.vertexCount();
+  m.vertexCornerBegin.assign(nv + 1, 0);
+  for (const Tri& t : m.triangles)
+    for (int v : t) ++m.vertexCornerBegin[v + 1];
+  for (int v = 0; v < nv; ++v) m.vertexCornerBegin[v + 1] += m.vertexCornerBegin[v];
+  m.vertexCorners.resize(3 * m.triangles.size());
+  std::vector<int> fill(m.vertexCornerBegin.begin(), m.vertexCornerBegin.end() - 1);
+  for (int c = 0; c < 3 * m.faceCount(); ++c) m.vertexCorners[fill[m.vertex(c)]++] = c;
+}
+
+std::vector<std::array<int, 2>> starNeighbours(const TriMesh& m) {
+  std::vector<std::array<int, 2>> others(m.vertexCorners.size());
+  for (size_t k = 0; k < others.size(); ++k) {
+    const int c = m.vertexCorners[k];
+    others[k] = {m.vertex(TriMesh::next(c)), m.vertex(TriMesh::prev(c))};
+  }
+  return others;
+}
+
+namespace {
+
+/// For each corner, finds the face across its opposite edge {p, q} among the corners of p, the
+/// smaller endpoint: O(sum of valence^2), no hash map.
+void buildOppositeCorners(TriMesh& m, const std::vector<std::array<int, 2>>& others) {
+  m.oppositeCorner.assign(3 * m.faceCount(), kBoundary);
+  for (int p = 0; p < m.vertexCount(); ++p) {
+    const int begin = m.vertexCornerBegin[p], end = m.vertexCornerBegin[p + 1];
+    for (int k = begin; k < end; ++k)
+      for (int side = 0; side < 2; ++side) {
+        const int x = others[k][side];
+        if (x < p) continue;  // edge {p, x} is done from x
+        // The corner of this face facing edge {p, x}, and the same in every other face with it.
+        const int c = m.vertexCorners[k];
+        const int facing = side == 0 ? TriMesh::prev(c) : TriMesh::next(c);
+        int found = kBoundary;
+        for (int j = begin; j < end; ++j) {
+          if (j == k) continue;
+          int across;
+          if (others[j][0] == x) across = TriMesh::prev(m.vertexCorners[j]);
+          else if (others[j][1] == x) across = TriMesh::next(m.vertexCorners[j]);
+          else continue;
+          found = (found == kBoundary) ? across : kNonManifold;
+        }
+        m.oppositeCorner[facing] = found;
+      }
+  }
+}
+
+/// Fans around vertex v: its corners joined through the manifold edges at v (edges {v, x} in
+/// exactly two faces), whichever way the faces are oriented. Returns the number of fans;
+/// `parent` is scratch space.
+int countFans(const TriMesh& m, const std::vector<std::array<int, 2>>& others, int v, std::vector<int>& parent) {
+  const int begin = m.vertexCornerBegin[v], n = m.vertexCornerBegin[v + 1] - begin;
+  parent.resize(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto find = [&parent](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (int i = 0; i < n; ++i)
+    for (int x : others[begin + i]) {
+      int other = -1, count = 0;
+      for (int j = 0; j < n; ++j)
+        if (j != i && (others[begin + j][0] == x || others[begin + j][1] == x)) {
+          other = j;
+          ++count;
+        }
+      if (count == 1) parent[find(i)] = find(other);
+    }
+  int fans = 0;
+  for (int i = 0; i < n; ++i) fans += find(i) == i;
+  return fans;
+}
+
+void countTopology(TriMesh& m, const std::vector<std::array<int, 2>>& others) {
+  Topology& t = m.topology;
+  t = Topology{};
+  const int nv = m.vertexCount();
+  const int nc = 3 * m.faceCount();
+
+  // Edges: each manifold edge is seen from two corners, others from one (boundary) or 3+.
+  int nonManifoldCorners = 0;
+  for (int c = 0; c < nc; ++c) {
+    const int o = m.oppositeCorner[c];
+    if (o == kBoundary) {
+      ++t.boundaryEdges;
+    } else if (o == kNonManifold) {
+      ++nonManifoldCorners;
+    } else if (c < o) {
+      // Consistent orientation: the shared edge runs p->q in one face and q->p in the other.
+      if (m.vertex(TriMesh::next(c)) == m.vertex(TriMesh::next(o))) ++t.inconsistentEdges;
+    }
+  }
+  {  // Non-manifold edges: group their corners by (min, max) endpoint pair.
+    std::vector<std::pair<long long, int>> keys;
+    keys.reserve(nonManifoldCorners);
+    for (int c = 0; c < nc; ++c)
+      if (m.oppositeCorner[c] == kNonManifold) {
+        long long p = m.vertex(TriMesh::next(c)), q = m.vertex(TriMesh::prev(c));
+        if (p > q) std::swap(p, q);
+        keys.push_back({p * nv + q, c});
+      }
+    std::sort(keys.begin(), keys.end());
+    for (size_t i = 0; i < keys.size(); ++i)
+      if (i == 0 || keys[i].first != keys[i - 1].first) ++t.nonManifoldEdges;
+  }
+
+  // Fans around each vertex: a vertex with more than one is not manifold.
+  std::vector<int> scratch;
+  for (int v = 0; v < nv; ++v) {
+    if (m.valence(v) == 0) {
+      ++t.isolatedVertices;
+      continue;
+    }
+    if (countFans(m, others, v, scratch) > 1) {
+      ++t.nonManifoldVertices;
+      t.nonManifoldVertexList.push_back(v);
+    }
+  }
+
+  // Components over face-connected vertices.
+  DisjointSets comps(nv);
+  for (const Tri& tri : m.triangles) {
+    comps.unite(tri[0], tri[1]);
+    comps.unite(tri[1], tri[2]);
+  }
+  t.componentOfVertex.assign(nv, -1);
+  std::vector<int> idOfRoot(nv, -1);
+  for (int v = 0; v < nv; ++v) {
+    if (m.valence(v) == 0) continue;
+    int& id = idOfRoot[comps.find(v)];
+    if (id < 0) id = t.components++;
+    t.componentOfVertex[v] = id;
+  }
+
+  // Boundary loops: boundary edges joined at their shared endpoints.
+  DisjointSets loops(nv);
+  std::vector<char> onBoundary(nv, 0);
+  for (int c = 0; c < nc; ++c)
+    if (m.oppositeCorner[c] == kBoundary) {
+      const int p = m.vertex(TriMesh::next(c)), q = m.vertex(TriMesh::prev(c));
+      loops.unite(p, q);
+      onBoundary[p] = onBoundary[q] = 1;
+    }
+  std::vector<char> loopSeen(nv, 0);
+  std::vector<int> loopsOfComponent(t.components, 0);
+  for (int v = 0; v < nv; ++v)
+    if (onBoundary[v] && !loopSeen[loops.find(v)]) {
+      loopSeen[loops.find(v)] = 1;
+      ++t.boundaryLoops;
+      ++loopsOfComponent[t.componentOfVertex[v]];
+    }
+
+  // Euler characteristic per component: chi_i = V_i - E_i + F_i; genus_i = (2 - chi_i - b_i) / 2.
+  // A manifold edge is seen from two corners, a boundary edge from one.
+  std::vector<long long> vCount(t.components, 0), fCount(t.components, 0), eTwice(t.components, 0);
+  for (int v = 0; v < nv; ++v)
+    if (t.componentOfVertex[v] >= 0) ++vCount[t.componentOfVertex[v]];
+  for (const Tri& tri : m.triangles) ++fCount[t.componentOfVertex[tri[0]]];
+  for (int c = 0; c < nc; ++c) {
+    const int o = m.oppositeCorner[c];
+    eTwice[t.componentOfVertex[m.vertex(c)]] += (o == kBoundary) ? 2 : (o >= 0 ? 1 : 0);
+  }
+  long long chiAll = 0;
+  for (int i = 0; i < t.components; ++i) {
+    const long long chiI = vCount[i] - eTwice[i] / 2 + fCount[i];
+    chiAll += chiI;
+    t.genus += static_cast<int>((2 - chiI - loopsOfComponent[i]) / 2);
+  }
+  // Non-manifold edges were left out of the per-component edge counts; subtract them globally.
+  t.eulerCharacteristic = static_cast<int>(chiAll - t.nonManifoldEdges);
+}
+
+}  // namespace
+
+Expected<TriMesh> buildTriMesh(std::vector<Vec3> positions, std::vector<Tri> triangles) {
+  if (Status s = validate(positions, triangles); !s) return s;
+  TriMesh m;
+  m.positions = std::move(positions);
+  m.triangles = std::move(triangles);
+  rebuildVertexCorners(m);
+  const std::vector<std::array<int, 2>> others = starNeighbours(m);
+  buildOppositeCorners(m, others);
+  countTopology(m, others);
+  return m;
+}
+
+double TriMesh::boundingBoxDiagonal() const {
+  if (positions.empty()) return 0.0;
+  Vec3 lo = positions[0], hi = positions[0];
+  for (const Vec3& p : positions) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return (hi - lo).norm();
+}
+
+double TriMesh::meanEdgeLength() const {
+  if (triangles.empty()) return 0.0;
+  double sum = 0.0;
+  for (const Tri& t : triangles)
+    for (int k = 0; k < 3; ++k) sum += (positions[t[k]] - positions[t[(k + 1) % 3]]).norm();
+  return sum / (3.0 * triangles.size());
+}
+
+std::vector<int> facesOfComponent(const TriMesh& mesh, int component) {
+  std::vector<int> faces;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+    if (mesh.topology.componentOfVertex[mesh.triangles[f][0]] == component) faces.push_back(f);
+  return faces;
+}
+
+Expected<TriMesh> orientCoherently(const TriMesh& mesh, std::vector<char>* flipped) {
+  if (mesh.topology.nonManifoldEdges > 0)
+    return nonManifold("cannot orient a mesh with " + std::to_string(mesh.topology.nonManifoldEdges) +
+                       " non-manifold edges");
+  const int nf = mesh.faceCount();
+  // flip[f]: -1 not visited, else whether f must be flipped relative to its component's first face.
+  std::vector<signed char> flip(nf, -1);
+  std::vector<int> queue, componentFaces;
+  for (int root = 0; root < nf; ++root) {
+    if (flip[root] >= 0) continue;
+    flip[root] = 0;
+    queue.assign(1, root);
+    componentFaces.clear();
+    for (size_t head = 0; head < queue.size(); ++head) {
+      const int f = queue[head];
+      componentFaces.push_back(f);
+      for (int k = 0; k < 3; ++k) {
+        const int c = 3 * f + k, o = mesh.oppositeCorner[c];
+        if (o < 0) continue;
+        const int g = TriMesh::face(o);
+        // Agreeing faces run the shared edge in opposite directions; `same` faces must differ in flip.
+        const bool same = mesh.vertex(TriMesh::next(c)) == mesh.vertex(TriMesh::next(o));
+        const signed char want = static_cast<signed char>(flip[f] ^ (same ? 1 : 0));
+        if (flip[g] < 0) {
+          flip[g] = want;
+          queue.push_back(g);
+        } else if (flip[g] != want) {
+          return invalidInput("the surface is not orientable (a Moebius strip or a Klein bottle): no oriented mesh of it "
+                              "exists");
+        }
+      }
+    }
+    // Keep the orientation of the majority of the component's faces.
+    size_t flips = 0;
+    for (int f : componentFaces) flips += flip[f];
+    if (2 * flips > componentFaces.size())
+      for (int f : componentFaces) flip[f] ^= 1;
+  }
+  std::vector<Tri> triangles = mesh.triangles;
+  for (int f = 0; f < nf; ++f)
+    if (flip[f]) std::swap(triangles[f][1], triangles[f][2]);
+  if (flipped) flipped->assign(flip.begin(), flip.end());
+  return buildTriMesh(mesh.positions, std::move(triangles));
+}
+
+}  // namespace gr

@@ -1,0 +1,47 @@
+// Edge flips that make a surface triangulation locally Delaunay, keeping its shape and topology.
+//
+// The dual of a Voronoi diagram computed at the resolution of the input's vertices picks, where
+// four samples are nearly cocircular, whichever diagonal the discrete fronts happened to favour;
+// some output triangles then have the wrong diagonal (a small angle where the other diagonal
+// gives two good triangles). This pass corrects that with the Delaunay criterion on the output:
+//
+//          x                      x
+//         / \                    /|\        interior edge (a, b) is flipped to (x, y) when the
+//        /   \                  / | \       angles facing it sum to more than 180 degrees
+//       a-----b      ->        a  |  b      (not locally Delaunay), the quad is nearly flat
+//        \   /                  \ | /       (no sharp feature is cut), both new faces keep the
+//         \ /                    \|/        orientation, and (x, y) is not already an edge.
+//          y                      y
+//
+// Caps are flipped away too: a face whose angle facing the edge is within a degree of 180 (three
+// samples on one straight line of the input, off it only by rounding) has no meaningful normal,
+// so the crease test ignores it; the flip keeps the line as the path a - x - b.
+// Flips never change the vertices, the number of faces, the components, genus or boundaries.
+// Edges to check are kept in a work list; each flip re-queues the quad's four outer edges.
+// Cost: O(F) plus O(valence) per flip (the new diagonal is looked up around its vertex); at most
+// maxFlipsPerFace * F flips. The adjacency is updated flip by flip, the vertex lists once at the end.
+#pragma once
+
+#include "core/mesh/tri_mesh.h"
+
+namespace gr {
+
+struct DelaunayFlipParams {
+  /// Largest angle between the normals of the two faces of an edge (before and after the flip)
+  /// for the edge to be flipped, in degrees: edges on sharper creases are features and stay.
+  double featureAngleDegrees = 30.0;
+  /// A flip must lower the larger of the two facing angles' sum by at least this (degrees), so
+  /// nearly cocircular quads do not flip back and forth.
+  double toleranceDegrees = 1e-6;
+  int maxFlipsPerFace = 10;  ///< safety bound on the total number of flips
+};
+
+struct DelaunayFlipResult {
+  int flips = 0;
+};
+
+/// Flips edges of a manifold, consistently oriented mesh in place (positions unchanged) and
+/// rebuilds its adjacency. A mesh that is not manifold is left as it is (0 flips).
+DelaunayFlipResult flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& params = {});
+
+}  // namespace gr

@@ -1,0 +1,298 @@
+#include "core/remesh/geodesic_delaunay.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+#include <string>
+
+#include "core/remesh/delaunay_flips.h"
+#include "core/geodesic/fast_marching.h"
+
+namespace gr {
+namespace {
+
+/// The dual triangles of a labelling, and the cells to repair if it is not a valid mesh with
+/// the given topology.
+struct Dual {
+  std::vector<Tri> triangles;
+  std::vector<int> badCells;
+};
+
+Dual buildDual(const TriMesh& mesh, const std::vector<int>& label, int cellCount) {
+  // Faces with three labels, keyed by their sorted label triple, sorted so a triple met twice
+  // (three cells meeting twice) sits next to its twin.
+  using Keyed = std::pair<std::array<int, 3>, int>;  // (sorted labels, face)
+  std::vector<Keyed> found;
+  std::vector<int> bucketBegin(cellCount + 1, 0);  // counting sort on the smallest label
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    std::array<int, 3> key = {label[t[0]], label[t[1]], label[t[2]]};
+    if (key[0] == key[1] || key[1] == key[2] || key[2] == key[0]) continue;
+    if (key[0] < 0 || key[1] < 0 || key[2] < 0) continue;  // a vertex no front reached
+    std::sort(key.begin(), key.end());
+    found.push_back({key, f});
+    ++bucketBegin[key[0] + 1];
+  }
+  for (int c = 0; c < cellCount; ++c) bucketBegin[c + 1] += bucketBegin[c];
+  std::vector<Keyed> keyed(found.size());
+  {
+    std::vector<int> fill(bucketBegin.begin(), bucketBegin.end() - 1);
+    for (const Keyed& k : found) keyed[fill[k.first[0]]++] = k;
+  }
+  // Each bucket holds the few faces around one cell's Voronoi vertices: sorted in place.
+  for (int c = 0; c < cellCount; ++c) std::sort(keyed.begin() + bucketBegin[c], keyed.begin() + bucketBegin[c + 1]);
+  Dual d;
+  std::vector<char> bad(cellCount, 0);
+  for (size_t a = 0; a < keyed.size();) {
+    size_t b = a + 1;
+    while (b < keyed.size() && keyed[b].first == keyed[a].first) ++b;
+    const Tri& t = mesh.triangles[keyed[a].second];
+    const int i = label[t[0]], j = label[t[1]], k = label[t[2]];
+    if (b - a > 1) {  // three cells meeting twice
+      bad[i] = bad[j] = bad[k] = 1;
+    } else {
+      d.triangles.push_back({i, j, k});  // oriented like the input face
+    }
+    a = b;
+  }
+  for (int c = 0; c < cellCount; ++c)
+    if (bad[c]) d.badCells.push_back(c);
+  return d;
+}
+
+/// Cells at the defects of a dual mesh: non-manifold edges and vertices, and boundary edges that
+/// do not join two samples lying on the input's boundary (a closed part of the input must give
+/// a closed part of the output, and output boundaries must follow input boundaries).
+std::vector<int> defectCells(const TriMesh& dual, const std::vector<char>& sampleOnBoundary) {
+  std::set<int> cells(dual.topology.nonManifoldVertexList.begin(), dual.topology.nonManifoldVertexList.end());
+  for (int c = 0; c < 3 * dual.faceCount(); ++c) {
+    const int o = dual.oppositeCorner[c];
+    const int a = dual.vertex(TriMesh::next(c)), b = dual.vertex(TriMesh::prev(c));
+    if (o == kNonManifold || (o == kBoundary && !(sampleOnBoundary[a] && sampleOnBoundary[b]))) {
+      cells.insert(a);
+      cells.insert(b);
+    }
+  }
+  return {cells.begin(), cells.end()};
+}
+
+Status checkInput(const TriMesh& mesh, const std::vector<SurfacePoint>& samples) {
+  if (samples.empty()) return invalidInput("no samples were given");
+  for (const SurfacePoint& s : samples) {
+    if (s.vertex >= mesh.vertexCount() || (s.vertex < 0 && (s.face < 0 || s.face >= mesh.faceCount())))
+      return invalidInput("sample " + (s.vertex >= 0 ? "vertex " + std::to_string(s.vertex) : "face " + std::to_string(s.face)) +
+                          " does not exist");
+  }
+  if (mesh.topology.nonManifoldEdges > 0 || mesh.topology.nonManifoldVertices > 0)
+    return invalidInput("the mesh is not manifold (" + std::to_string(mesh.topology.nonManifoldEdges) +
+                        " non-manifold edges, " + std::to_string(mesh.topology.nonManifoldVertices) +
+                        " non-manifold vertices)");
+  // A component whose faces all have zero area (points on a line or at one place) has no
+  // surface to triangulate.
+  std::vector<double> area(mesh.topology.components, 0.0);
+  for (const Tri& t : mesh.triangles) {
+    const int c = mesh.topology.componentOfVertex[t[0]];
+    if (c >= 0)
+      area[c] += (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm();
+  }
+  for (size_t c = 0; c < area.size(); ++c)
+    if (!(area[c] > 0.0))
+      return invalidInput("component " + std::to_string(c) + " of the mesh has zero area (all its faces are "
+                          "degenerate): there is no surface to remesh");
+  // The dual's triangles take the orientation of the input faces they come from.
+  if (mesh.topology.inconsistentEdges > 0)
+    return invalidInput("the faces of the mesh are not oriented coherently (" +
+                        std::to_string(mesh.topology.inconsistentEdges) +
+                        " edges have two faces that disagree): orient them first (orientCoherently)");
+  return Status::ok();
+}
+
+}  // namespace
+
+Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> vertices,
+                                          const DelaunayParams& params, Progress progress) {
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  std::vector<SurfacePoint> samples;
+  for (int v : vertices) samples.push_back(SurfacePoint::atVertex(v));
+  if (Status s = checkInput(mesh, samples); !s) return s;
+  FastMarcher marcher(mesh, metric);
+  for (size_t i = 0; i < samples.size(); ++i)
+    if (Status s = marcher.addSource(samples[i], static_cast<int>(i)); !s) return s;
+  if (Status s = marcher.propagate(); !s) return s;
+  return geodesicDelaunay(marcher, std::move(samples), params, std::move(progress));
+}
+
+Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<SurfacePoint> samples,
+                                          const DelaunayParams& params, Progress progress) {
+  const TriMesh& mesh = marcher.mesh();
+  if (Status s = checkInput(mesh, samples); !s) return s;
+  std::vector<char> onBoundary(mesh.vertexCount(), 0);
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
+    if (mesh.oppositeCorner[c] == kBoundary) onBoundary[mesh.vertex(TriMesh::next(c))] = onBoundary[mesh.vertex(TriMesh::prev(c))] = 1;
+
+
+  DelaunayResult r;
+  const int initialCount = static_cast<int>(samples.size());
+  // A component the samples do not reach (fewer samples than components) gets one at its lowest
+  // vertex, as the sampling gives each component its first: counted as added by the repair.
+  {
+    std::vector<char> reached(mesh.topology.components, 0);
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+      if (marcher.label()[v] >= 0 && mesh.topology.componentOfVertex[v] >= 0) reached[mesh.topology.componentOfVertex[v]] = 1;
+    bool added = false;
+    for (int v = 0; v < mesh.vertexCount(); ++v) {
+      const int c = mesh.topology.componentOfVertex[v];
+      if (c < 0 || reached[c]) continue;
+      reached[c] = 1;
+      samples.push_back(SurfacePoint::atVertex(v));
+      if (Status s = marcher.addSource(v, static_cast<int>(samples.size()) - 1); !s) return s;
+      added = true;
+    }
+    if (added)
+      if (Status s = marcher.propagate(); !s) return s;
+  }
+  for (int round = 0;; ++round) {
+    const std::vector<int>& label = marcher.label();
+    const int cells = static_cast<int>(samples.size());
+    Dual dual = buildDual(mesh, label, cells);
+    std::vector<int> bad = dual.badCells;
+    std::vector<Vec3> positions(cells);
+    for (int c = 0; c < cells; ++c) positions[c] = samples[c].position(mesh);
+    // Components without any triangle (one cell covers a whole component) are defects too.
+    Expected<TriMesh> out = dual.triangles.empty() ? Expected<TriMesh>(invalidInput("no triangle"))
+                                                   : buildTriMesh(positions, dual.triangles);
+    // A cell that reaches the input's boundary must have its sample on it, or the output's
+    // boundary would cut across the surface.
+    std::vector<char> sampleOnBoundary(cells, 0), cellOnBoundary(cells, 0);
+    for (int c = 0; c < cells; ++c) sampleOnBoundary[c] = samples[c].vertex >= 0 && onBoundary[samples[c].vertex];
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+      if (onBoundary[v] && label[v] >= 0) cellOnBoundary[label[v]] = 1;
+    for (int c = 0; c < cells; ++c)
+      if (cellOnBoundary[c] && !sampleOnBoundary[c]) bad.push_back(c);
+    if (out) {
+      const Topology& t = out->topology;
+      const std::vector<int> defects = defectCells(*out, sampleOnBoundary);
+      bad.insert(bad.end(), defects.begin(), defects.end());
+      // A sample inside a face may end up nearest to no vertex (another sample took its cell):
+      // it is left out of the output rather than repaired.
+      std::vector<int> cellSize(cells, 0);
+      for (int v = 0; v < mesh.vertexCount(); ++v)
+        if (label[v] >= 0) ++cellSize[label[v]];
+      int isolated = 0;
+      for (int v = 0; v < out->vertexCount(); ++v) isolated += out->valence(v) == 0 && cellSize[v] > 0;
+      const bool sameTopology = t.components == mesh.topology.components && t.genus == mesh.topology.genus &&
+                                t.boundaryLoops == mesh.topology.boundaryLoops && isolated == 0 &&
+                                t.inconsistentEdges == 0 && t.isManifold();
+      if (bad.empty() && sameTopology) {
+        if (t.isolatedVertices > 0) {  // drop the empty cells' samples, renumber the rest
+          std::vector<int> index(cells, -1);
+          std::vector<Vec3> kept;
+          for (int c = 0; c < cells; ++c)
+            if (out->valence(c) > 0) {
+              index[c] = static_cast<int>(kept.size());
+              kept.push_back(positions[c]);
+              r.samplePoint.push_back(samples[c]);
+            }
+          std::vector<Tri> tris = out->triangles;
+          for (Tri& tri : tris)
+            for (int& v : tri) v = index[v];
+          out = buildTriMesh(std::move(kept), std::move(tris));
+          r.region = label;
+          for (int& l : r.region)
+            if (l >= 0) l = index[l];
+          r.droppedSamples = cells - out->vertexCount();
+        } else {
+          r.samplePoint = samples;
+          r.region = label;
+        }
+        if (params.delaunayFlips) r.flippedEdges = flipToDelaunay(*out, params.flips).flips;
+        r.mesh = std::move(out).value();
+        r.addedSamples = cells - initialCount;
+        r.repairRounds = round;
+        return r;
+      }
+      if (bad.empty()) {
+        // Valid locally but not the input's topology (e.g. a handle not captured, a component
+        // with too few cells): refine the cells with the largest distance to their sample.
+        for (int v = 0; v < out->vertexCount(); ++v)
+          if (out->valence(v) == 0 && cellSize[v] > 0) bad.push_back(v);
+        if (bad.empty()) {
+          std::vector<double> far(cells, 0.0);
+          for (int v = 0; v < mesh.vertexCount(); ++v)
+            if (label[v] >= 0) far[label[v]] = std::max(far[label[v]], marcher.distance()[v]);
+          std::vector<int> order(cells);
+          for (int c = 0; c < cells; ++c) order[c] = c;
+          std::sort(order.begin(), order.end(), [&](int a, int b) { return far[a] > far[b]; });
+          bad.assign(order.begin(), order.begin() + std::max(1, cells / 10));
+        }
+      }
+    } else {
+      for (int c = 0; c < cells; ++c) bad.push_back(c);
+    }
+    if (round >= params.maxRepairRounds)
+      return Status{StatusCode::NotConverged, "the geodesic Delaunay triangulation is still invalid after " +
+                                                  std::to_string(round) + " rounds of sample insertion"};
+    // How many rounds a mesh needs is not known ahead (1 to a few hundred): the bar moves by
+    // a tenth of what is left each round.
+    if (!progress.report(1.0 - std::pow(0.9, round + 1), "Geodesic Delaunay repair"))
+      return cancelled();
+    // New samples: in each bad cell, its vertex farthest from the samples.
+    std::sort(bad.begin(), bad.end());
+    bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+    // New samples: in each bad cell its farthest vertex; the farthest boundary vertex in cells
+    // that reach the boundary, so that boundaries are sampled on the boundary.
+    std::vector<int> farthest(cells, -1), farthestOnBoundary(cells, -1);
+    for (int v = 0; v < mesh.vertexCount(); ++v) {
+      const int c = label[v];
+      if (c < 0) continue;
+      const double u = marcher.distance()[v];
+      if (farthest[c] < 0 || u > marcher.distance()[farthest[c]]) farthest[c] = v;
+      if (onBoundary[v] && (farthestOnBoundary[c] < 0 || u > marcher.distance()[farthestOnBoundary[c]]))
+        farthestOnBoundary[c] = v;
+    }
+    for (int c = 0; c < cells; ++c)
+      if (farthestOnBoundary[c] >= 0 && marcher.distance()[farthestOnBoundary[c]] > 0.0) farthest[c] = farthestOnBoundary[c];
+    // A bad cell that is only its sample cannot be refined: refine the cells around it instead.
+    std::vector<char> isBad(cells, 0);
+    for (int c : bad) isBad[c] = 1;
+    for (int c : bad)
+      if (farthest[c] < 0 || marcher.distance()[farthest[c]] <= 0.0) {
+        const SurfacePoint& p = samples[c];
+        const Tri around = p.vertex >= 0 ? Tri{p.vertex, p.vertex, p.vertex} : mesh.triangles[p.face];
+        for (int x : around)
+          for (const int* k = mesh.cornersBegin(x); k != mesh.cornersEnd(x); ++k)
+            for (int w : {mesh.vertex(TriMesh::next(*k)), mesh.vertex(TriMesh::prev(*k))})
+              if (label[w] >= 0) isBad[label[w]] = 1;
+      }
+    // Farthest first, as the sampling would; a candidate nearer to a sample added in this round
+    // than to the existing ones is left for the next round (adjacent bad cells have their
+    // farthest vertices around the same Voronoi vertex: adding all of them would cluster).
+    std::vector<int> candidates;
+    for (int c = 0; c < cells; ++c)
+      if (isBad[c] && farthest[c] >= 0 && marcher.distance()[farthest[c]] > 0.0) candidates.push_back(farthest[c]);
+    std::sort(candidates.begin(), candidates.end(),
+              [&](int a, int b) { return marcher.distance()[a] > marcher.distance()[b]; });
+    std::vector<Vec3> addedPositions;
+    int added = 0;
+    for (int v : candidates) {
+      const Vec3& p = mesh.positions[v];
+      const double u = marcher.distance()[v];
+      bool covered = false;
+      for (const Vec3& q : addedPositions) covered = covered || (p - q).squaredNorm() < u * u;
+      if (covered) continue;
+      addedPositions.push_back(p);
+      samples.push_back(SurfacePoint::atVertex(v));
+      if (Status s = marcher.addSource(v, static_cast<int>(samples.size()) - 1); !s) return s;
+      ++added;
+    }
+    if (added == 0)
+      return Status{StatusCode::NotConverged, "the geodesic Delaunay triangulation is invalid and no cell can be refined"};
+    if (Status s = marcher.propagate(); !s) return s;
+  }
+}
+
+}  // namespace gr

@@ -1,0 +1,71 @@
+// Geodesic Delaunay triangulation of surface samples, as the dual of their geodesic Voronoi
+// diagram (paper §3.2), with automatic repair until the result is a valid mesh of the input's
+// topology.
+//
+// Each input face whose three vertices lie in three different Voronoi cells (i, j, k) gives the
+// output triangle (i, j, k), oriented like that face:
+//
+//      cell i  \   cell j          input face (a, b, c), labels (i, j, k)
+//               \ /                   -> output triangle (sample i, sample j, sample k)
+//                *   <- three fronts meet
+//                |
+//             cell k
+//
+// The dual is a valid triangulation when the samples are dense enough (closed ball property:
+// every cell a disk, two cells meeting along one arc, three cells at one point). Where it is not
+// (an output edge with three or more triangles, a non-manifold vertex, a triangle twice, a
+// topology other than the input's), the vertex farthest from the samples inside the offending
+// cells becomes a new sample, the Voronoi diagram is updated incrementally, and the dual is
+// rebuilt; the number of added samples is reported. Last, edges that are not locally Delaunay
+// are flipped (delaunay_flips.h) where that keeps features, orientation and topology.
+// Boundaries: output boundary edges must join samples lying on input boundaries, and a cell
+// that reaches a boundary must have its sample on it (else its farthest boundary vertex is
+// added); the output then has the input's boundary loops.
+// Cost: one incremental front per added sample plus O(F) per round.
+#pragma once
+
+#include <vector>
+
+#include "core/remesh/delaunay_flips.h"
+#include "core/geodesic/fast_marching.h"
+#include "core/geodesic/metric.h"
+#include "core/base/progress.h"
+#include "core/base/status.h"
+#include "core/mesh/tri_mesh.h"
+
+namespace gr {
+
+struct DelaunayParams {
+  /// Rounds of sample insertion before giving up (NotConverged). Each round adds at least one
+  /// sample, so the repair ends within V rounds anyway; the cap bounds its time. A mesh with many
+  /// small holes needs many (elephant-with-holes.off, 106 boundary loops: 176 rounds from 50 samples).
+  int maxRepairRounds = 1000;
+  /// Last, flip edges of the valid dual that are not locally Delaunay (delaunay_flips.h): the
+  /// discrete Voronoi diagram picks the diagonal of nearly cocircular samples at random.
+  bool delaunayFlips = true;
+  DelaunayFlipParams flips;  ///< feature angle and tolerance of those flips
+};
+
+struct DelaunayResult {
+  TriMesh mesh;                     ///< output: one vertex per sample, at the sample's position
+  std::vector<SurfacePoint> samplePoint;  ///< per output vertex, the point of the input it sits on
+  int addedSamples = 0;             ///< samples inserted by the repair
+  int droppedSamples = 0;           ///< samples inside faces left out: nearest to no vertex
+  int repairRounds = 0;
+  int flippedEdges = 0;             ///< edges flipped to make the result locally Delaunay
+  std::vector<int> region;          ///< per input vertex, its output vertex (Voronoi cell)
+};
+
+/// Fails with InvalidInput (no samples, a sample out of range, a non-manifold mesh, faces not oriented
+/// coherently: see orientCoherently in tri_mesh.h, a component of zero area),
+/// NotConverged (still invalid after maxRepairRounds) or Cancelled.
+Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> samples,
+                                          const DelaunayParams& params = {}, Progress progress = {});
+
+/// The same on an engine that already holds the field of `samples` with labels 0..n-1 in that
+/// order (as farthestPointSampling leaves it, with FpsResult::points): no propagation from
+/// scratch. Samples may lie inside faces; the ones the repair adds are vertices.
+Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<SurfacePoint> samples,
+                                          const DelaunayParams& params = {}, Progress progress = {});
+
+}  // namespace gr

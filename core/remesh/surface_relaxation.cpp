@@ -1,0 +1,305 @@
+#include "core/remesh/surface_relaxation.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace gr {
+namespace {
+
+constexpr double kDegree = M_PI / 180.0;
+
+/// Closest point of triangle (a, b, c) to p, as barycentric coordinates (Ericson, Real-Time
+/// Collision Detection, 5.1.5). A coordinate is exactly 0 when the point is on the opposite edge.
+Vec3 closestBary(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+    const double v = d1 / (d1 - d3);
+    return {1 - v, v, 0};
+  }
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+    const double w = d2 / (d2 - d6);
+    return {1 - w, 0, w};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0, 1 - w, w};
+  }
+  const double denom = va + vb + vc;
+  if (!(denom > 0)) return {1.0 / 3, 1.0 / 3, 1.0 / 3};  // degenerate face
+  const double v = vb / denom, w = vc / denom;
+  return {1 - v - w, v, w};
+}
+
+/// The input surface as the walks see it: faces, and which edges they may not cross.
+class SurfaceWalker {
+ public:
+  // Everything is computed where the walks go: the cost follows the output, not the input
+  // (apart from one byte per input corner for the blocked-edge cache).
+  SurfaceWalker(const TriMesh& mesh, double featureAngleDegrees)
+      : mesh_(mesh), cosFeature_(std::cos(featureAngleDegrees * kDegree)), blocked_(3 * size_t(mesh.faceCount()), -1) {}
+
+  /// Unit normal of an input face (zero for a degenerate face).
+  Vec3 normal(int face) const {
+    const Vec3 n = areaNormal(face);
+    const double len = n.norm();
+    return len > 0 ? Vec3(n / len) : Vec3::Zero();
+  }
+
+  /// Whether the edge facing `corner` may not be crossed: a boundary, a crease sharper than the
+  /// feature angle, or an edge of a degenerate face.
+  bool blocked(int corner) const {
+    signed char& known = blocked_[corner];  // computed once per corner the walks reach
+    if (known < 0) known = computeBlocked(corner);
+    return known;
+  }
+
+  /// Whether input vertex v has a blocked edge (a crease, corner or boundary vertex).
+  bool sharpVertex(int v) const {
+    for (const int* c = mesh_.cornersBegin(v); c != mesh_.cornersEnd(v); ++c)
+      if (blocked(TriMesh::next(*c)) || blocked(TriMesh::prev(*c))) return true;
+    return false;
+  }
+
+  /// A face that contains the point (for a vertex: its first face).
+  int faceOf(const SurfacePoint& p) const {
+    if (p.vertex >= 0) return TriMesh::face(*mesh_.cornersBegin(p.vertex));
+    return p.face;
+  }
+
+  /// The closest point to q reachable from `face` by steps to neighbouring faces that bring it
+  /// strictly closer, never across a blocked edge.
+  SurfacePoint project(const Vec3& q, int face) const {
+    Vec3 bary = baryIn(q, face);
+    double dist = (pointOf(face, bary) - q).squaredNorm();
+    for (int step = 0; step < kMaxSteps; ++step) {
+      int bestFace = -1;
+      Vec3 bestBary;
+      double best = dist;
+      const auto tryFace = [&](int g) {
+        const Vec3 b = baryIn(q, g);
+        const double d = (pointOf(g, b) - q).squaredNorm();
+        if (d < best) {
+          best = d;
+          bestFace = g;
+          bestBary = b;
+        }
+      };
+      // Zero coordinates say where on the face the closest point is: an edge, or a vertex.
+      for (int k = 0; k < 3; ++k) {
+        if (bary[k] != 0) continue;
+        const int c = 3 * face + k;  // the corner facing the edge the point is on
+        if (!blocked(c)) tryFace(TriMesh::face(mesh_.oppositeCorner[c]));
+        if (bary[(k + 1) % 3] == 0) fan(3 * face + (k + 2) % 3, tryFace);
+        if (bary[(k + 2) % 3] == 0) fan(3 * face + (k + 1) % 3, tryFace);
+      }
+      if (bestFace < 0) break;
+      face = bestFace;
+      bary = bestBary;
+      dist = best;
+    }
+    return SurfacePoint::inFace(face, bary);
+  }
+
+  Vec3 pointOf(int face, const Vec3& bary) const {
+    const Tri& t = mesh_.triangles[face];
+    return bary[0] * mesh_.positions[t[0]] + bary[1] * mesh_.positions[t[1]] + bary[2] * mesh_.positions[t[2]];
+  }
+
+ private:
+  static constexpr int kMaxSteps = 1000;
+
+  Vec3 baryIn(const Vec3& q, int face) const {
+    const Tri& t = mesh_.triangles[face];
+    return closestBary(q, mesh_.positions[t[0]], mesh_.positions[t[1]], mesh_.positions[t[2]]);
+  }
+
+  /// Calls visit(face) for the faces around the vertex at `corner`, turning both ways from its
+  /// face and stopping at blocked edges.
+  template <class Visit>
+  void fan(int corner, Visit& visit) const {
+    for (int dir = 0; dir < 2; ++dir) {
+      int c = corner;
+      for (int guard = 0; guard < 64; ++guard) {
+        // Cross the edge (corner's vertex, next) or (corner's vertex, prev) of c's face.
+        const int facing = dir == 0 ? TriMesh::prev(c) : TriMesh::next(c);
+        if (blocked(facing)) break;
+        const int o = mesh_.oppositeCorner[facing];
+        c = dir == 0 ? TriMesh::prev(o) : TriMesh::next(o);
+        if (TriMesh::face(c) == TriMesh::face(corner)) break;
+        visit(TriMesh::face(c));
+      }
+    }
+  }
+
+  bool computeBlocked(int corner) const {
+    const int o = mesh_.oppositeCorner[corner];
+    if (o < 0) return true;
+    const Vec3 a = areaNormal(TriMesh::face(corner)), b = areaNormal(TriMesh::face(o));
+    return !(a.dot(b) > cosFeature_ * std::sqrt(a.squaredNorm() * b.squaredNorm()));  // also if degenerate
+  }
+
+  const TriMesh& mesh_;
+  double cosFeature_;
+  mutable std::vector<signed char> blocked_;  ///< per input corner: -1 not computed yet, else 0 / 1
+
+  /// Cross product of two edges of the face: normal times twice the area.
+  Vec3 areaNormal(int face) const {
+    const Tri& t = mesh_.triangles[face];
+    return (mesh_.positions[t[1]] - mesh_.positions[t[0]]).cross(mesh_.positions[t[2]] - mesh_.positions[t[0]]);
+  }
+};
+
+/// Cosine of the smallest angle of triangle (p, q, r): the angle facing the shortest edge.
+/// A degenerate triangle gives 1 (angle 0).
+double smallestAngleCosine(const Vec3& p, const Vec3& q, const Vec3& r) {
+  const double a = (q - r).squaredNorm(), b = (r - p).squaredNorm(), c = (p - q).squaredNorm();
+  double shortest = a, o1 = b, o2 = c;  // the angle facing `shortest`, between sides o1 and o2
+  if (b < shortest) std::swap(shortest, o1);
+  if (c < shortest) std::swap(shortest, o2);
+  const double denominator = 2 * std::sqrt(o1 * o2);
+  return denominator > 0 ? std::min(1.0, (o1 + o2 - shortest) / denominator) : 1.0;
+}
+
+}  // namespace
+
+Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
+                                          const RelaxationParams& params) {
+  RelaxationResult r;
+  const int n = output.vertexCount();
+  if (static_cast<int>(points.size()) != n)
+    return invalidInput("relaxation: " + std::to_string(points.size()) + " surface points for " + std::to_string(n) +
+                        " vertices");
+  if (!output.topology.isManifold() || output.topology.inconsistentEdges > 0 || !input.topology.isManifold())
+    return invalidInput("relaxation needs manifold, consistently oriented meshes");
+  for (const SurfacePoint& p : points) {
+    const bool ok = p.vertex >= 0 ? p.vertex < input.vertexCount() && input.valence(p.vertex) > 0
+                                  : p.face >= 0 && p.face < input.faceCount();
+    if (!ok) return invalidInput("relaxation: a surface point out of range of the input");
+  }
+  if (params.iterations <= 0) return r;
+
+  const SurfaceWalker walker(input, params.featureAngleDegrees);
+  std::vector<char> fixed(n, 0);
+  for (int c = 0; c < 3 * output.faceCount(); ++c)
+    if (output.oppositeCorner[c] < 0) {  // a boundary edge: both its vertices stay
+      fixed[output.vertex(TriMesh::next(c))] = 1;
+      fixed[output.vertex(TriMesh::prev(c))] = 1;
+    }
+  for (int i = 0; i < n; ++i) {
+    if (points[i].vertex >= 0 && walker.sharpVertex(points[i].vertex)) fixed[i] = 1;
+    if (output.valence(i) == 0) fixed[i] = 1;
+    r.fixedVertices += fixed[i];
+  }
+
+  const double goal = 30.0 * kDegree;
+  std::vector<Vec3>& pos = output.positions;
+  // Smallest angle (radians) of the faces around v with v at position p, and their normals.
+  const auto ring = [&](int v, const Vec3& p, std::vector<Vec3>* normals) {
+    double largestCosine = -1;
+    for (const int* c = output.cornersBegin(v); c != output.cornersEnd(v); ++c) {
+      const Vec3& a = pos[output.vertex(TriMesh::next(*c))];
+      const Vec3& b = pos[output.vertex(TriMesh::prev(*c))];
+      largestCosine = std::max(largestCosine, smallestAngleCosine(p, a, b));
+      if (normals) normals->push_back((a - p).cross(b - p));
+    }
+    return std::acos(largestCosine);
+  };
+  // Moves v to the input point closest to `target` if no face around v turns over (except to
+  // face the way the input does there) and the ring's smallest angle stays at least
+  // max(min(before, goal), floor).
+  std::vector<Vec3> before, after;
+  const auto tryMove = [&](int v, const Vec3& target, int face, double smallestBefore, double floor, double maxAway) {
+    const SurfacePoint moved = walker.project(target, face);
+    const Vec3 q = walker.pointOf(moved.face, moved.bary);
+    const Vec3 normalThere = walker.normal(moved.face);
+    before.clear();
+    after.clear();
+    ring(v, pos[v], &before);
+    const double smallest = ring(v, q, &after);
+    // A face may not turn over, unless it then faces the way the input does (an unfolding).
+    for (size_t k = 0; k < after.size(); ++k)
+      if (!(after[k].dot(before[k]) > 0) && !(after[k].dot(normalThere) > 0)) return smallestBefore;
+    if (smallest < std::max(std::min(smallestBefore, goal), floor)) return smallestBefore;
+    // The point it leaves must stay close to the new fan: a vertex on a tip or a ridge keeps it.
+    const Vec3& p = pos[v];
+    double away = std::numeric_limits<double>::infinity();
+    for (const int* c = output.cornersBegin(v); c != output.cornersEnd(v); ++c) {
+      const Vec3& a = pos[output.vertex(TriMesh::next(*c))];
+      const Vec3& b = pos[output.vertex(TriMesh::prev(*c))];
+      const Vec3 w = closestBary(p, q, a, b);
+      away = std::min(away, (p - (w[0] * q + w[1] * a + w[2] * b)).squaredNorm());
+    }
+    if (away > maxAway * maxAway) return smallestBefore;
+    pos[v] = q;
+    points[v] = moved;
+    ++r.moves;
+    return smallest;
+  };
+  for (int it = 0; it < params.iterations; ++it) {
+    for (int v = 0; v < n; ++v) {
+      if (fixed[v]) continue;
+      const Vec3 p = pos[v];
+      Vec3 centre = Vec3::Zero(), ringNormal = Vec3::Zero();
+      double ringLength = 0;
+      for (const int* c = output.cornersBegin(v); c != output.cornersEnd(v); ++c) {
+        const Vec3& a = pos[output.vertex(TriMesh::next(*c))];
+        const Vec3& b = pos[output.vertex(TriMesh::prev(*c))];
+        centre += a;  // each neighbour once: it is `next` in exactly one face of a closed fan
+        ringNormal += (a - p).cross(b - p);
+        ringLength += (a - p).norm();
+      }
+      centre /= output.valence(v);
+      ringLength /= output.valence(v);
+      const double maxAway = params.maxDeviation * ringLength;
+      // The tangent plane: the output ring's, unless the ring is folded against the input.
+      const int face = walker.faceOf(points[v]);
+      Vec3 normal = walker.normal(face);
+      if (normal.isZero()) continue;
+      if (ringNormal.dot(normal) > 0.5 * ringNormal.norm()) normal = ringNormal.normalized();
+      Vec3 move = centre - p;
+      move -= normal * normal.dot(move);
+      const double smallest = tryMove(v, p + move, face, ring(v, p, nullptr), 0.0, maxAway);
+      if (smallest >= goal) continue;
+      // Still a small angle here (at a tip, a saddle, next to a fixed vertex): the mean of the
+      // ring is not better, so try steps in eight tangent directions from where the vertex is
+      // now and keep the best. No deviation limit: a bad triangle costs more than the error.
+      const Vec3 here = pos[v];
+      const int hereFace = walker.faceOf(points[v]);
+      const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
+      double best = smallest;
+      Vec3 bestTarget = here;
+      for (const double step : {0.4, 0.2, 0.1})
+        for (int k = 0; k < 8; ++k) {
+          const Vec3 target = here + step * ringLength * (std::cos(k * M_PI / 4) * e1 + std::sin(k * M_PI / 4) * e2);
+          const SurfacePoint moved = walker.project(target, hereFace);
+          const double s = ring(v, walker.pointOf(moved.face, moved.bary), nullptr);
+          if (s > best) {
+            best = s;
+            bestTarget = target;
+          }
+        }
+      if (best > smallest)
+        tryMove(v, bestTarget, hereFace, smallest, smallest, std::numeric_limits<double>::infinity());
+    }
+    r.flips += flipToDelaunay(output, params.flips).flips;
+    ++r.iterations;
+  }
+  return r;
+}
+
+}  // namespace gr

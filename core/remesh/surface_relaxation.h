@@ -1,0 +1,62 @@
+// Tangential relaxation of a remeshed surface on the input surface: better angles, same mesh.
+//
+// The geodesic Delaunay triangulation of farthest-point samples has no angle under 30 degrees in
+// the limit of a fine input, but its samples sit on input vertices (or are resolved by fronts
+// between vertices), so at 10-30% of the input's vertex count its circumradii exceed the covering
+// radius by up to ~50% and some angles fall to a few degrees. This pass moves each free output
+// vertex toward the mean of its neighbours in its tangent plane and puts it back on the input
+// surface, then flips edges back to Delaunay (delaunay_flips.h), a few times over:
+//
+//        n                         q = p + (c - p) minus its component along the normal n,
+//        |  c (mean of the ring)   then its closest point on the input, found by walking from
+//        | /                       the face p lies in to neighbouring faces while the distance
+//   -----p-----  output vertex     to q decreases; the walk never crosses a sharp input edge
+//
+// A move is kept only if no incident face turns over (unless it then faces the way the input
+// does: an unfolding), the smallest angle of the incident faces does not fall below min(its
+// previous value, 30 degrees) ("smart" Laplacian), and the point the vertex leaves stays within
+// maxDeviation of the new faces (tips and ridges, where farthest-point samples sit, are kept).
+// Where a small angle remains, steps in eight tangent directions are tried and the best is kept.
+// Output vertices on the boundary, and those on an input vertex that has a sharp edge (a crease
+// or corner of the input), do not move.
+// Connectivity changes only by the flips: vertices, components, genus and boundaries are kept, and
+// every vertex stays on the input surface (its SurfacePoint is updated).
+// Cost: O(iterations * F_out * (valence + walk length)); the input is read only where walks go.
+#pragma once
+
+#include <vector>
+
+#include "core/remesh/delaunay_flips.h"
+#include "core/mesh/surface_point.h"
+#include "core/base/status.h"
+#include "core/mesh/tri_mesh.h"
+
+namespace gr {
+
+struct RelaxationParams {
+  int iterations = 3;  ///< rounds of (move every free vertex, then flip to Delaunay); 0 = off
+  /// Input edges whose faces' normals differ by more than this (degrees) are creases: vertices on
+  /// them stay, and walks do not cross them. 60 keeps the creases of CAD parts (fandisk) and lets
+  /// the vertices of scans (armadillo: thousands of edges over 30 degrees) move.
+  double featureAngleDegrees = 60.0;
+  /// A move is refused when the point the vertex leaves ends farther than this times the mean
+  /// length of its edges from the new faces around it: tips and ridges, where the farthest-point
+  /// samples sit, are not smoothed away (the surface error stays that of the triangulation).
+  double maxDeviation = 0.05;
+  DelaunayFlipParams flips;  ///< the flips after each round
+};
+
+struct RelaxationResult {
+  int iterations = 0;      ///< rounds done
+  int moves = 0;           ///< vertex moves kept, over all rounds
+  int fixedVertices = 0;   ///< vertices that never move (boundary, input creases and corners)
+  int flips = 0;           ///< edges flipped over all rounds
+};
+
+/// Relaxes `output` in place on the surface of `input`. `points[i]` is where output vertex i lies
+/// on the input (as DelaunayResult::samplePoint) and is updated with it. Fails (InvalidInput) if
+/// the sizes disagree, a point is out of range, or either mesh is not manifold; then nothing changes.
+Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
+                                          const RelaxationParams& params = {});
+
+}  // namespace gr

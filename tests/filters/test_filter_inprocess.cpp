@@ -1,0 +1,757 @@
+// In-process tests of the filters: the plugin class on a real MeshDocument (MeshLab's
+// libmeshlab-common), without meshlabserver. These see what a script run cannot: after a failed
+// filter, the user's mesh (positions, quality, colour, flags, data mask) is exactly as before.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <common/GLLogStream.h>
+#include <common/meshmodel.h>
+
+#include "core/geodesic/fast_marching.h"
+#include "core/mesh/vcg_mesh.h"
+#include "vcg_adapters/cmesho_adapter.h"
+#include "filter_geodesic_remesh/filter_geodesic_remesh.h"
+#include "filter_geodesic_remesh/parameter_names.h"
+#include "tests/support/test_support.h"
+
+namespace gr {
+namespace {
+
+/// Copies a core mesh into a new layer of `doc`.
+MeshModel* addMesh(MeshDocument& doc, const std::vector<Vec3>& positions, const std::vector<Tri>& triangles) {
+  MeshModel* mm = doc.addNewMesh("", "input", true);
+  CMeshO& m = mm->cm;
+  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, positions.size());
+  for (const Vec3& p : positions) (vi++)->P() = CMeshO::CoordType(float(p.x()), float(p.y()), float(p.z()));
+  if (!triangles.empty()) {
+    auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, triangles.size());
+    for (const Tri& t : triangles) {
+      for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t[k]];
+      ++fi;
+    }
+  }
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  return mm;
+}
+
+/// The faces of a layer (with no deleted elements, as the filters leave them) as vertex indices.
+std::vector<Tri> faceIndices(const MeshModel& mm) {
+  std::vector<Tri> tris;
+  if (mm.cm.vert.empty()) return tris;
+  tris.reserve(mm.cm.face.size());
+  const CVertexO* const first = &mm.cm.vert[0];
+  for (const auto& f : mm.cm.face) tris.push_back({int(f.cV(0) - first), int(f.cV(1) - first), int(f.cV(2) - first)});
+  return tris;
+}
+
+/// Everything a filter could change in a mesh.
+struct Snapshot {
+  std::vector<float> values;
+  std::vector<unsigned> colorsAndFlags;
+  int mask = 0, vn = 0, fn = 0;
+  explicit Snapshot(const MeshModel& mm) : mask(mm.dataMask()), vn(mm.cm.vn), fn(mm.cm.fn) {
+    for (const auto& v : mm.cm.vert) {
+      for (int k = 0; k < 3; ++k) values.push_back(v.cP()[k]);
+      values.push_back(v.cQ());
+      colorsAndFlags.push_back(*reinterpret_cast<const unsigned*>(&v.cC()[0]));
+      colorsAndFlags.push_back(unsigned(v.Flags()));
+    }
+  }
+  bool operator==(const Snapshot& o) const {
+    // Compare bit patterns so NaN coordinates compare equal to themselves.
+    return mask == o.mask && vn == o.vn && fn == o.fn && colorsAndFlags == o.colorsAndFlags &&
+           values.size() == o.values.size() &&
+           std::equal(values.begin(), values.end(), o.values.begin(),
+                      [](float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; });
+  }
+};
+
+class FilterInProcess : public ::testing::Test {
+ protected:
+  FilterGeodesicRemeshPlugin plugin;
+  GLLogStream log;
+  MeshDocument doc;
+  QAction* action = nullptr;
+  RichParameterList params;
+
+  void SetUp() override {
+    plugin.setLog(&log);
+    use("Geodesic Distance: Fast Marching from Selected Vertices");
+  }
+  void use(const char* filterName) {
+    action = nullptr;
+    for (QAction* a : plugin.actions())
+      if (a->text() == filterName) action = a;
+    ASSERT_NE(action, nullptr) << filterName;
+  }
+  void declare(MeshModel& mm) {
+    params = RichParameterList();
+    plugin.initParameterSet(action, mm, params);
+  }
+  bool apply() { return plugin.applyFilter(action, doc, params, nullptr); }
+  std::string logText() const {
+    std::string all;
+    for (const auto& entry : log.logStringList()) all += entry.second.toStdString() + "\n";
+    return all;
+  }
+  /// Applies the filter to a bad mesh and checks: false, a message in the log, mesh untouched.
+  void expectCleanFailure(MeshModel& mm, const std::string& expectedMessage) {
+    const Snapshot before(mm);
+    EXPECT_FALSE(apply());
+    EXPECT_NE(plugin.errorMsg().toStdString().find(expectedMessage), std::string::npos)
+        << "errorMessage: " << plugin.errorMsg().toStdString();
+    EXPECT_NE(logText().find(expectedMessage), std::string::npos) << "log:\n" << logText();
+    EXPECT_TRUE(Snapshot(mm) == before) << "a failed filter changed the mesh";
+  }
+};
+
+TEST_F(FilterInProcess, FandiskMatchesCoreAndMarksQualityAndColor) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  mm->cm.vert[0].SetS();
+  mm->cm.vert[3000].SetS();
+  declare(*mm);
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_TRUE(mm->hasDataMask(MeshModel::MM_VERTQUALITY));
+  EXPECT_TRUE(mm->hasDataMask(MeshModel::MM_VERTCOLOR));
+  // The filter converts coordinates to float and back; compare with the core on those.
+  std::vector<Vec3> asFloat;
+  for (const auto& v : mm->cm.vert) asFloat.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
+  const TriMesh same = std::move(buildTriMesh(asFloat, fandisk.triangles)).value();
+  const auto core = fastMarching(same, Metric::uniform(), {0, 3000});
+  ASSERT_TRUE(core);
+  for (int v = 0; v < same.vertexCount(); ++v)
+    ASSERT_NEAR(mm->cm.vert[v].Q(), core->distance[v], 1e-6 * (1 + core->distance[v])) << v;
+  EXPECT_NE(logText().find("Reached 6475 of 6475 vertices"), std::string::npos) << logText();
+}
+
+TEST_F(FilterInProcess, QualityAsSpeedHalvesDistancesForSpeedTwo) {
+  const TriMesh grid = test::planeGrid(10);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  for (auto& v : mm->cm.vert) v.Q() = 2.0f;
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
+  ASSERT_TRUE(apply()) << logText();
+  const auto unit = fastMarching(grid, Metric::uniform(), {0});
+  for (int v = 0; v < grid.vertexCount(); ++v)
+    EXPECT_NEAR(mm->cm.vert[v].Q(), 0.5 * unit->distance[v], 1e-5) << v;
+}
+
+TEST_F(FilterInProcess, MaxDistanceLeavesFarVerticesAtMinusOne) {
+  const TriMesh grid = test::planeGrid(10);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  params.setValue(filters::param::kMaxDistance, AbsPercValue(0.5f));
+  ASSERT_TRUE(apply()) << logText();
+  int reached = 0;
+  for (const auto& v : mm->cm.vert) {
+    EXPECT_TRUE(v.cQ() == -1.0f || (v.cQ() >= 0.0f && v.cQ() <= 0.5f)) << v.cQ();
+    reached += v.cQ() >= 0.0f;
+  }
+  EXPECT_GT(reached, 0);
+  EXPECT_LT(reached, mm->cm.vn);
+  EXPECT_NE(logText().find("were not reached"), std::string::npos) << logText();
+}
+
+TEST_F(FilterInProcess, NoSelection) {
+  const TriMesh grid = test::planeGrid(4);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  declare(*mm);
+  expectCleanFailure(*mm, "no vertex is selected");
+}
+
+TEST_F(FilterInProcess, PointCloud) {
+  MeshModel* mm = addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {});
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  expectCleanFailure(*mm, "the mesh has no faces");
+}
+
+TEST_F(FilterInProcess, EmptyMesh) {
+  MeshModel* mm = addMesh(doc, {}, {});
+  declare(*mm);
+  expectCleanFailure(*mm, "the mesh has no vertices");
+}
+
+TEST_F(FilterInProcess, NanCoordinate) {
+  const TriMesh grid = test::planeGrid(4);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  mm->cm.vert[7].P()[1] = std::numeric_limits<float>::quiet_NaN();
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  expectCleanFailure(*mm, "vertex 7 has a non-finite coordinate");
+}
+
+TEST_F(FilterInProcess, NonManifoldEdge) {
+  MeshModel* mm = addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  expectCleanFailure(*mm, "1 non-manifold edges");
+}
+
+TEST_F(FilterInProcess, FaceRepeatingAVertex) {
+  MeshModel* mm = addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 1, 1}});
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  expectCleanFailure(*mm, "face 1 uses vertex 1 twice");
+}
+
+TEST_F(FilterInProcess, QualityAsSpeedWithZeroOrNegativeSpeed) {
+  for (float bad : {0.0f, -1.0f, std::numeric_limits<float>::quiet_NaN()}) {
+    const TriMesh grid = test::planeGrid(4);
+    MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+    for (auto& v : mm->cm.vert) v.Q() = 1.0f;
+    mm->cm.vert[5].Q() = bad;
+    mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+    mm->cm.vert[0].SetS();
+    declare(*mm);
+    params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
+    expectCleanFailure(*mm, "vertex 5 has");
+  }
+}
+
+TEST_F(FilterInProcess, QualityAsSpeedWithoutQuality) {
+  const TriMesh grid = test::planeGrid(4);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
+  expectCleanFailure(*mm, "the mesh has no per-vertex quality");
+}
+
+TEST_F(FilterInProcess, ImpossibleParameters) {
+  const TriMesh grid = test::planeGrid(4);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  mm->cm.vert[0].SetS();
+  declare(*mm);
+  params.setValue(filters::param::kMaxDistance, AbsPercValue(-1.0f));
+  expectCleanFailure(*mm, "MaxDistance must be >= 0");
+  declare(*mm);
+  params.setValue(filters::param::kColorBy, EnumValue(7));
+  expectCleanFailure(*mm, "ColorBy must be 0");
+}
+
+TEST_F(FilterInProcess, UniformRemeshMakesANewLayerAndKeepsTheInput) {
+  use("Remeshing: Geodesic Uniform");
+  const TriMesh knot = test::loadRealMesh("knot2.off");  // two tori
+  MeshModel* mm = addMesh(doc, knot.positions, knot.triangles);
+  for (auto& v : mm->cm.vert) v.C() = vcg::Color4b(200, 10, 10, 255);
+  mm->updateDataMask(MeshModel::MM_VERTCOLOR);
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(400));
+  const Snapshot before(*mm);
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_TRUE(Snapshot(*mm) == before) << "the input layer changed";
+  ASSERT_EQ(doc.meshList.size(), 2);
+  MeshModel* out = doc.mm();
+  ASSERT_NE(out, mm);
+  std::vector<Vec3> pos;
+  for (const auto& v : out->cm.vert) pos.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
+  const std::vector<Tri> tris = faceIndices(*out);
+  const auto result = buildTriMesh(pos, tris);
+  ASSERT_TRUE(result);
+  EXPECT_GE(result->vertexCount(), 400);
+  EXPECT_EQ(result->topology.components, 2);
+  EXPECT_EQ(result->topology.genus, 2);
+  EXPECT_EQ(result->topology.boundaryEdges, 0);
+  EXPECT_TRUE(result->topology.isManifold());
+  EXPECT_EQ(result->topology.inconsistentEdges, 0);
+  // Colours carried from the input vertices.
+  EXPECT_TRUE(out->hasDataMask(MeshModel::MM_VERTCOLOR));
+  EXPECT_EQ(out->cm.vert[0].C(), vcg::Color4b(200, 10, 10, 255));
+  EXPECT_NE(logText().find("added to make the triangulation valid"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("Hausdorff distance"), std::string::npos) << logText();
+}
+
+// With Refinement, samples lie between input vertices: a linear quality field (q = x) must come
+// out exact at every output vertex, and the refined run must still keep the topology.
+TEST_F(FilterInProcess, UniformRemeshInterpolatesQualityAtRefinedSamples) {
+  use("Remeshing: Geodesic Uniform");
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  for (auto& v : mm->cm.vert) v.Q() = v.cP()[0];
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(1942));  // 30%
+  params.setValue(filters::param::kRefinement, IntValue(1));
+  ASSERT_TRUE(apply()) << logText();
+  MeshModel* out = doc.mm();
+  ASSERT_NE(out, mm);
+  int betweenVertices = 0;
+  for (const auto& v : out->cm.vert) {
+    EXPECT_NEAR(v.cQ(), v.cP()[0], 1e-5) << "quality not interpolated at the sample";
+    bool isInputVertex = false;
+    for (const auto& w : mm->cm.vert) isInputVertex = isInputVertex || w.cP() == v.cP();
+    betweenVertices += !isInputVertex;
+  }
+  EXPECT_GT(betweenVertices, 0) << "with refinement some samples lie between input vertices";
+  EXPECT_NE(logText().find("subdivisions"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("Topology kept: 1 components, genus 0, 0 boundary loops"), std::string::npos) << logText();
+}
+
+// With SubVertexPlacement, interior samples move inside faces: quality (q = x) is interpolated
+// exactly there too, and the topology is kept.
+TEST_F(FilterInProcess, UniformRemeshWithSubVertexPlacement) {
+  use("Remeshing: Geodesic Uniform");
+  const TriMesh bunny = test::loadRealMesh("bunny00.off");
+  MeshModel* mm = addMesh(doc, bunny.positions, bunny.triangles);
+  for (auto& v : mm->cm.vert) v.Q() = v.cP()[0];
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(3770));  // 10%
+  params.setValue(filters::param::kSubVertexPlacement, BoolValue(true));
+  ASSERT_TRUE(apply()) << logText();
+  MeshModel* out = doc.mm();
+  ASSERT_NE(out, mm);
+  std::set<std::array<float, 3>> inputPositions;
+  for (const auto& w : mm->cm.vert) inputPositions.insert({w.cP()[0], w.cP()[1], w.cP()[2]});
+  int betweenVertices = 0;
+  for (const auto& v : out->cm.vert) {
+    EXPECT_NEAR(v.cQ(), v.cP()[0], 1e-5) << "quality not interpolated at the sample";
+    betweenVertices += !inputPositions.count({v.cP()[0], v.cP()[1], v.cP()[2]});
+  }
+  EXPECT_GT(betweenVertices, out->cm.vn / 2) << "most interior samples should lie inside faces";
+  const TriMesh& in = bunny;
+  EXPECT_NE(logText().find("Topology kept: " + std::to_string(in.topology.components) + " components, genus " +
+                           std::to_string(in.topology.genus) + ", " + std::to_string(in.topology.boundaryLoops) +
+                           " boundary loops"),
+            std::string::npos)
+      << logText();
+}
+
+TEST_F(FilterInProcess, UniformRemeshBadInputLeavesTheDocumentAlone) {
+  use("Remeshing: Geodesic Uniform");
+  MeshModel* nonManifold =
+      addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  declare(*nonManifold);
+  expectCleanFailure(*nonManifold, "non-manifold edges");
+  EXPECT_EQ(doc.meshList.size(), 1) << "a failed filter added a layer";
+  const TriMesh grid = test::planeGrid(4);
+  MeshModel* cloud = addMesh(doc, grid.positions, {});
+  declare(*cloud);
+  expectCleanFailure(*cloud, "the mesh has no faces");
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* f = addMesh(doc, fandisk.positions, fandisk.triangles);
+  declare(*f);
+  params.setValue(filters::param::kTargetVertices, IntValue(100000));
+  expectCleanFailure(*f, "cannot place 100000 samples");
+  declare(*f);
+  params.setValue(filters::param::kTargetVertices, IntValue(0));
+  params.setValue(filters::param::kSpacing, AbsPercValue(0.0f));
+  expectCleanFailure(*f, "TargetVertices is 0 and Spacing is not > 0");
+  declare(*f);
+  params.setValue(filters::param::kRefinement, IntValue(7));
+  expectCleanFailure(*f, "Refinement must be 0 to 3");
+  declare(*f);
+  params.setValue(filters::param::kRelaxation, IntValue(-1));
+  expectCleanFailure(*f, "Relaxation must be 0 to 100 rounds");
+  std::vector<Vec3> line = grid.positions;
+  for (Vec3& x : line) x = Vec3(x.x(), 0, 0);  // the grid collapsed onto a segment
+  MeshModel* flat = addMesh(doc, line, grid.triangles);
+  declare(*flat);
+  expectCleanFailure(*flat, "zero area");
+  EXPECT_EQ(doc.meshList.size(), 4) << "a failed filter added a layer";
+}
+
+// An input whose faces are not oriented coherently (blobby-shuffled.off: 3,069 edges whose two
+// faces disagree) is remeshed on an oriented copy: a valid, oriented output, the input layer
+// untouched. With Refinement the samples lie inside faces, some of them flipped in the copy: the
+// quality q = x interpolated there must still be exact (the barycentric coordinates map back).
+TEST_F(FilterInProcess, UniformRemeshOrientsAnIncoherentInput) {
+  use("Remeshing: Geodesic Uniform");
+  const TriMesh blobby = test::loadRealMesh("blobby-shuffled.off");
+  ASSERT_GT(blobby.topology.inconsistentEdges, 0);
+  MeshModel* mm = addMesh(doc, blobby.positions, blobby.triangles);
+  for (auto& v : mm->cm.vert) v.Q() = v.cP()[0];
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(300));
+  params.setValue(filters::param::kRefinement, IntValue(1));
+  const Snapshot before(*mm);
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_TRUE(Snapshot(*mm) == before) << "the input layer changed";
+  MeshModel* out = doc.mm();
+  ASSERT_NE(out, mm);
+  std::vector<Vec3> pos;
+  for (const auto& v : out->cm.vert) pos.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
+  const std::vector<Tri> tris = faceIndices(*out);
+  const test::Recount r = test::recount(tris, static_cast<int>(pos.size()));
+  EXPECT_TRUE(r.closedManifoldEdges && r.oriented && r.manifoldVertices);
+  EXPECT_EQ(r.components, 1);
+  EXPECT_EQ(r.genusSum, 0);
+  int insideFaces = 0;
+  for (const auto& v : out->cm.vert) {
+    EXPECT_NEAR(v.cQ(), v.cP()[0], 1e-5) << "quality not interpolated at the sample";
+    bool isInputVertex = false;
+    for (const auto& w : mm->cm.vert) isInputVertex = isInputVertex || w.cP() == v.cP();
+    insideFaces += !isInputVertex;
+  }
+  EXPECT_GT(insideFaces, 0);
+  EXPECT_NE(logText().find("faces run against their neighbours' orientation (3069 edges)"), std::string::npos)
+      << logText();
+}
+
+TEST_F(FilterInProcess, UniformRemeshOfANonOrientableSurfaceFailsCleanly) {
+  use("Remeshing: Geodesic Uniform");
+  const TriMesh strip = test::moebiusStrip(40);
+  MeshModel* mm = addMesh(doc, strip.positions, strip.triangles);
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(20));
+  expectCleanFailure(*mm, "not orientable");
+  EXPECT_EQ(doc.meshList.size(), 1) << "a failed filter added a layer";
+}
+
+// --- Adaptive remeshing and total curvature ---------------------------------------------------
+
+/// Vertices of `m` that are endpoints of an edge whose dihedral angle exceeds 60 degrees,
+/// computed here from face normals (independently of the curvature code).
+std::vector<char> onSharpEdges(const TriMesh& m) {
+  std::vector<char> sharp(m.vertexCount(), 0);
+  const auto normal = [&](int f) {
+    const Tri& t = m.triangles[f];
+    return Vec3((m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]).normalized());
+  };
+  for (int c = 0; c < 3 * m.faceCount(); ++c) {
+    const int o = m.oppositeCorner[c];
+    if (o < 0 || normal(TriMesh::face(c)).dot(normal(TriMesh::face(o))) > std::cos(60.0 * M_PI / 180.0)) continue;
+    sharp[m.vertex(TriMesh::next(c))] = sharp[m.vertex(TriMesh::prev(c))] = 1;
+  }
+  return sharp;
+}
+
+// Attractive total curvature on fandisk: the new layer keeps the topology, and its vertices
+// gather on the sharp edges (a larger share of output vertices near them than the uniform run).
+TEST_F(FilterInProcess, AdaptiveRemeshGathersVerticesOnSharpEdges) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  const std::vector<char> sharp = onSharpEdges(fandisk);
+  const auto shareNearSharp = [&](const MeshModel& out) {
+    // An output vertex is "near" when its nearest input vertex is on a sharp edge.
+    int near = 0;
+    for (const auto& v : out.cm.vert) {
+      int best = 0;
+      double bestD = 1e300;
+      for (int w = 0; w < fandisk.vertexCount(); ++w) {
+        const double d = (fandisk.positions[w] - Vec3(v.cP()[0], v.cP()[1], v.cP()[2])).squaredNorm();
+        if (d < bestD) bestD = d, best = w;
+      }
+      near += sharp[best];
+    }
+    return double(near) / out.cm.vn;
+  };
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  use("Remeshing: Geodesic Uniform");
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(647));
+  ASSERT_TRUE(apply()) << logText();
+  const double uniformShare = shareNearSharp(*doc.mm());
+  doc.setCurrentMesh(mm->id());
+  use("Remeshing: Geodesic Adaptive");
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(647));
+  ASSERT_TRUE(apply()) << logText();
+  MeshModel* out = doc.mm();
+  ASSERT_NE(out, mm);
+  EXPECT_EQ(doc.meshList.size(), 3);
+  const double adaptiveShare = shareNearSharp(*out);
+  std::printf("share of output vertices on sharp edges: uniform %.3f, adaptive %.3f\n", uniformShare, adaptiveShare);
+  EXPECT_GT(adaptiveShare, 1.5 * uniformShare);
+  EXPECT_NE(logText().find("Field: total curvature"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("mapping Attractive"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("Topology kept: 1 components, genus 0, 0 boundary loops"), std::string::npos) << logText();
+  const auto tri = adapters::toCore(out->cm);
+  ASSERT_TRUE(tri);
+  EXPECT_TRUE(tri->mesh.topology.isManifold());
+  EXPECT_EQ(tri->mesh.topology.inconsistentEdges, 0);
+}
+
+TEST_F(FilterInProcess, AdaptiveRemeshBadFieldsLeaveTheDocumentAlone) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  use("Remeshing: Geodesic Adaptive");
+  declare(*mm);
+  params.setValue(filters::param::kField, EnumValue(0));  // vertex quality, but the mesh has none
+  expectCleanFailure(*mm, "the mesh has no vertex quality");
+  params.setValue(filters::param::kField, EnumValue(2));  // colour gradient, no colour
+  expectCleanFailure(*mm, "the mesh has no vertex colour");
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  for (auto& v : mm->cm.vert) v.Q() = v.cP()[0];  // negative values: not allowed with Attractive
+  params.setValue(filters::param::kField, EnumValue(0));
+  expectCleanFailure(*mm, "negative");
+  params.setValue(filters::param::kStrength, FloatValue(std::numeric_limits<float>::quiet_NaN()));
+  params.setValue(filters::param::kMapping, EnumValue(0));
+  expectCleanFailure(*mm, "strength");
+  params.setValue(filters::param::kMapping, EnumValue(7));
+  expectCleanFailure(*mm, "Mapping must be 0 to 2");
+  EXPECT_EQ(doc.meshList.size(), 1) << "a failed filter added a layer";
+}
+
+// The paper's texture-driven example (3.3): a colour edge (white for x < 0, black beyond) on
+// fandisk; Attractive on the colour gradient gathers vertices along the edge.
+TEST_F(FilterInProcess, AdaptiveRemeshFromColorGradient) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  mm->updateDataMask(MeshModel::MM_VERTCOLOR);
+  for (auto& v : mm->cm.vert) v.C() = v.cP()[0] < 0 ? vcg::Color4b::White : vcg::Color4b::Black;
+  const double h = fandisk.meanEdgeLength();
+  const auto shareNearEdge = [&](const MeshModel& out) {
+    int near = 0;
+    for (const auto& v : out.cm.vert) near += std::abs(v.cP()[0]) < 2 * h;
+    return double(near) / out.cm.vn;
+  };
+  use("Remeshing: Geodesic Uniform");
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(647));
+  ASSERT_TRUE(apply()) << logText();
+  const double uniformShare = shareNearEdge(*doc.mm());
+  doc.setCurrentMesh(mm->id());
+  use("Remeshing: Geodesic Adaptive");
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(647));
+  params.setValue(filters::param::kField, EnumValue(2));
+  ASSERT_TRUE(apply()) << logText();
+  const double adaptiveShare = shareNearEdge(*doc.mm());
+  std::printf("share of output vertices within 2 edge lengths of the colour edge: uniform %.3f, adaptive %.3f\n",
+              uniformShare, adaptiveShare);
+  EXPECT_GT(adaptiveShare, 2.0 * uniformShare);
+  EXPECT_NE(logText().find("Field: colour intensity gradient"), std::string::npos) << logText();
+}
+
+// A constant quality is not an error: the remeshing falls back to a uniform speed and says so.
+TEST_F(FilterInProcess, AdaptiveRemeshOnAConstantFieldFallsBackToUniform) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  for (auto& v : mm->cm.vert) v.Q() = 2.5f;
+  use("Remeshing: Geodesic Adaptive");
+  declare(*mm);
+  params.setValue(filters::param::kField, EnumValue(0));
+  params.setValue(filters::param::kTargetVertices, IntValue(300));
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_NE(logText().find("the field is constant"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("uniform speed"), std::string::npos) << logText();
+  EXPECT_EQ(doc.meshList.size(), 2);
+  EXPECT_EQ(doc.mm()->cm.vn, 300 + test::numberBefore(logText(), "added to make"));
+}
+
+// Any filter's quality drives it: a quality field (here Direct on q = x) is read and logged.
+TEST_F(FilterInProcess, AdaptiveRemeshFromVertexQuality) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  for (auto& v : mm->cm.vert) v.Q() = v.cP()[0];
+  use("Remeshing: Geodesic Adaptive");
+  declare(*mm);
+  params.setValue(filters::param::kField, EnumValue(0));
+  params.setValue(filters::param::kMapping, EnumValue(0));  // Direct: any sign
+  params.setValue(filters::param::kTargetVertices, IntValue(400));
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_NE(logText().find("Field: vertex quality"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("mapping Direct"), std::string::npos) << logText();
+  // Direct, q = x: F grows with x, so the half with the larger x gets fewer vertices.
+  float lo = 1e30f, hi = -1e30f;
+  for (const auto& v : mm->cm.vert) lo = std::min(lo, v.cP()[0]), hi = std::max(hi, v.cP()[0]);
+  int low = 0, high = 0;
+  for (const auto& v : doc.mm()->cm.vert) (v.cP()[0] < 0.5f * (lo + hi) ? low : high)++;
+  EXPECT_GT(low, high);
+}
+
+TEST_F(FilterInProcess, TotalCurvatureBadInputLeavesTheDocumentAlone) {
+  use("Compute Total Curvature (Normal Cycle) into Vertex Quality");
+  const TriMesh grid = test::planeGrid(4);
+  MeshModel* cloud = addMesh(doc, grid.positions, {});
+  declare(*cloud);
+  expectCleanFailure(*cloud, "the mesh has no faces");
+  MeshModel* nonManifold =
+      addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  declare(*nonManifold);
+  expectCleanFailure(*nonManifold, "non-manifold edges");
+  MeshModel* nan = addMesh(doc, grid.positions, grid.triangles);
+  nan->cm.vert[3].P()[1] = std::numeric_limits<float>::quiet_NaN();
+  declare(*nan);
+  expectCleanFailure(*nan, "non-finite coordinate");
+  MeshModel* good = addMesh(doc, grid.positions, grid.triangles);
+  declare(*good);
+  params.setValue(filters::param::kCurvatureRadius, AbsPercValue(-1.0f));
+  expectCleanFailure(*good, "curvature radius");
+  EXPECT_EQ(doc.meshList.size(), 4) << "a failed filter added a layer";
+}
+
+TEST_F(FilterInProcess, TotalCurvatureOfASphereIsTwoOverR) {
+  const double r = 2.5;
+  const TriMesh sphere = test::icosphere(5, r);
+  MeshModel* mm = addMesh(doc, sphere.positions, sphere.triangles);
+  use("Compute Total Curvature (Normal Cycle) into Vertex Quality");
+  declare(*mm);
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_TRUE(mm->hasDataMask(MeshModel::MM_VERTQUALITY));
+  for (const auto& v : mm->cm.vert) ASSERT_NEAR(v.cQ(), 2.0 / r, 0.05 * 2.0 / r);
+  EXPECT_NE(logText().find("written to vertex quality"), std::string::npos) << logText();
+  EXPECT_EQ(doc.meshList.size(), 1);
+}
+
+// A triangle soup (every face with its own three vertices, as an STL read without merging):
+// valid output with the input's topology (each face a component: the output is the input), and
+// a warning that says what to do.
+TEST_F(FilterInProcess, UniformRemeshOfATriangleSoupWarnsToMergeVertices) {
+  const TriMesh sphere = test::icosphere(2);
+  std::vector<Vec3> positions;
+  std::vector<Tri> soup;
+  for (const Tri& t : sphere.triangles) {
+    const int first = static_cast<int>(positions.size());
+    for (int v : t) positions.push_back(sphere.positions[v]);
+    soup.push_back({first, first + 1, first + 2});
+  }
+  use("Remeshing: Geodesic Uniform");
+  MeshModel* mm = addMesh(doc, positions, soup);
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(100));
+  ASSERT_TRUE(apply()) << logText();
+  MeshModel* out = doc.mm();
+  ASSERT_NE(out, mm);
+  test::expectValidWithTopologyOf(test::recount(faceIndices(*out), out->cm.vn),
+                                  test::recount(soup, static_cast<int>(positions.size())));
+  EXPECT_NE(logText().find("320 of the 320 faces share no edge"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("Merge Close Vertices"), std::string::npos) << logText();
+}
+
+// A layer with deleted elements, as MeshLab leaves one after "Delete Selected Faces" and
+// "Delete Selected Vertices" (nothing compacted): each filter must give on its live part exactly
+// what it gives on the same mesh stored compactly, whatever the deleted slots hold (a NaN here).
+TEST_F(FilterInProcess, EveryFilterIgnoresDeletedElements) {
+  const TriMesh sphere = test::icosphere(4);
+  MeshModel* holed = addMesh(doc, sphere.positions, sphere.triangles);
+  // Delete the cap z > 0.6 (faces, then the vertices left without a face): a disk remains.
+  CMeshO& h = holed->cm;
+  std::vector<char> used(h.vert.size(), 0);
+  for (auto& f : h.face) {
+    if (f.cV(0)->cP()[2] > 0.6f && f.cV(1)->cP()[2] > 0.6f && f.cV(2)->cP()[2] > 0.6f) {
+      vcg::tri::Allocator<CMeshO>::DeleteFace(h, f);
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) used[f.cV(k) - &h.vert[0]] = 1;
+  }
+  std::vector<int> compactIndex(h.vert.size(), -1);
+  std::vector<Vec3> livePositions;
+  for (size_t i = 0; i < h.vert.size(); ++i) {
+    if (!used[i]) {
+      vcg::tri::Allocator<CMeshO>::DeleteVertex(h, h.vert[i]);
+      continue;
+    }
+    compactIndex[i] = static_cast<int>(livePositions.size());
+    livePositions.push_back(sphere.positions[i]);
+  }
+  ASSERT_GT(h.vert.size() - h.vn, 10u);
+  for (auto& v : h.vert)
+    if (v.IsD()) v.P()[0] = std::numeric_limits<float>::quiet_NaN();  // never to be read
+  std::vector<Tri> liveTriangles;
+  for (const auto& f : h.face)
+    if (!f.IsD()) liveTriangles.push_back({compactIndex[f.cV(0) - &h.vert[0]], compactIndex[f.cV(1) - &h.vert[0]],
+                                           compactIndex[f.cV(2) - &h.vert[0]]});
+  MeshModel* compact = addMesh(doc, livePositions, liveTriangles);
+  const std::vector<int> liveSlots = [&] {
+    std::vector<int> live;  // (not "slots": a Qt macro)
+    for (size_t i = 0; i < h.vert.size(); ++i)
+      if (!h.vert[i].IsD()) live.push_back(static_cast<int>(i));
+    return live;
+  }();
+  h.vert[liveSlots[0]].SetS();
+  compact->cm.vert[0].SetS();
+
+  for (const char* filter : {"Geodesic Distance: Fast Marching from Selected Vertices", "Remeshing: Geodesic Uniform",
+                             "Remeshing: Geodesic Adaptive", "Compute Total Curvature (Normal Cycle) into Vertex Quality"}) {
+    SCOPED_TRACE(filter);
+    use(filter);
+    MeshModel* out[2] = {nullptr, nullptr};
+    MeshModel* in[2] = {holed, compact};
+    for (int i = 0; i < 2; ++i) {
+      doc.setCurrent(in[i]);
+      declare(*in[i]);
+      if (std::string(filter) == "Remeshing: Geodesic Uniform") params.setValue(filters::param::kTargetVertices, IntValue(300));
+      ASSERT_TRUE(apply()) << logText();
+      out[i] = doc.mm();
+    }
+    if (out[0] == holed) {  // a field written into the input: compare it per live vertex
+      for (size_t k = 0; k < liveSlots.size(); ++k)
+        ASSERT_EQ(h.vert[liveSlots[k]].cQ(), compact->cm.vert[k].cQ()) << "live vertex " << k;
+      continue;
+    }
+    ASSERT_NE(out[0], holed);
+    ASSERT_NE(out[1], compact);
+    ASSERT_EQ(out[0]->cm.vn, out[1]->cm.vn);
+    ASSERT_EQ(out[0]->cm.fn, out[1]->cm.fn);
+    for (int k = 0; k < out[0]->cm.vn; ++k) {
+      ASSERT_EQ(out[0]->cm.vert[k].cP(), out[1]->cm.vert[k].cP()) << k;
+      ASSERT_EQ(out[0]->cm.vert[k].cQ(), out[1]->cm.vert[k].cQ()) << k;
+    }
+    EXPECT_EQ(faceIndices(*out[0]), faceIndices(*out[1]));
+    const test::Recount r = test::recount(faceIndices(*out[0]), out[0]->cm.vn);
+    test::expectValidWithTopologyOf(r, test::recount(liveTriangles, static_cast<int>(livePositions.size())));
+    EXPECT_EQ(r.boundaryLoops, 1);
+  }
+}
+
+// --- Every filter over every mesh of the data set ----------------------------------------------
+
+/// The data set's mesh files that loadTriMesh reads as triangle meshes (point clouds left out).
+std::vector<std::string> dataSetTriangleMeshes() {
+  std::vector<std::string> names;
+  for (const std::string& name : test::dataSetMeshFiles())
+    if (loadTriMesh(test::meshPath(name))) names.push_back(name);
+  if (names.empty()) names.push_back("(no triangle mesh found in " + std::string(GR_MESH_DIR) + ")");
+  return names;
+}
+
+class FilterDataSetSweep : public FilterInProcess, public ::testing::WithParamInterface<std::string> {};
+
+// Each filter with its defaults on the mesh (vertex 0 selected for the fast marching): it succeeds
+// (a remeshing then leaves a manifold, oriented mesh with the input's components, genus and
+// boundary loops, recounted here, on a new layer), or it fails with a message in the log and the
+// input exactly as it was.
+TEST_P(FilterDataSetSweep, EveryFilterSucceedsOrFailsCleanly) {
+  const Expected<TriMesh> input = loadTriMesh(test::meshPath(GetParam()));
+  ASSERT_TRUE(input) << input.status().message;
+  const test::Recount in = test::recount(input->triangles, input->vertexCount());
+  MeshModel* mm = addMesh(doc, input->positions, input->triangles);
+  mm->cm.vert[0].SetS();
+  for (const char* filter : {"Geodesic Distance: Fast Marching from Selected Vertices", "Remeshing: Geodesic Uniform",
+                             "Remeshing: Geodesic Adaptive", "Compute Total Curvature (Normal Cycle) into Vertex Quality"}) {
+    SCOPED_TRACE(filter);
+    use(filter);
+    doc.setCurrent(mm);
+    declare(*mm);
+    const size_t layers = doc.meshList.size();
+    const Snapshot before(*mm);
+    if (!apply()) {
+      const std::string message = plugin.errorMsg().toStdString();
+      EXPECT_FALSE(message.empty());
+      EXPECT_NE(logText().find(message), std::string::npos) << "log:\n" << logText();
+      EXPECT_TRUE(Snapshot(*mm) == before) << "a failed filter changed the mesh: " << message;
+      EXPECT_EQ(doc.meshList.size(), layers) << "a failed filter added a layer";
+      continue;
+    }
+    if (std::string(filter).rfind("Remeshing", 0) != 0) continue;
+    EXPECT_TRUE(Snapshot(*mm) == before) << "the input layer changed";
+    ASSERT_EQ(doc.meshList.size(), layers + 1);
+    const MeshModel* out = doc.mm();
+    test::expectValidWithTopologyOf(test::recount(faceIndices(*out), out->cm.vn), in);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, FilterDataSetSweep, ::testing::ValuesIn(dataSetTriangleMeshes()),
+                         [](const auto& mesh) { return test::testNameOfFile(mesh.param); });
+
+}  // namespace
+}  // namespace gr

@@ -1,0 +1,328 @@
+// Integration tests: the real meshlabserver (Debian's MeshLab 2020.09) runs our filter from
+// .mlx scripts with the plugin staged in GR_STAGE_DIR. Checks the output against the core's own
+// result and against simple truths, and checks that bad input fails cleanly.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <tuple>
+
+#include "core/measure/evaluation.h"
+#include "core/geodesic/fast_marching.h"
+#include "core/mesh/vcg_convert.h"
+#include "core/mesh/vcg_mesh.h"
+#include "tests/support/test_support.h"
+
+namespace gr {
+namespace {
+
+const std::string kStage = GR_STAGE_DIR;
+const std::string kResources = std::string(GR_SOURCE_DIR) + "/resources/";
+const std::string kOut = std::string(GR_TEST_OUTPUT_DIR) + "/";
+const char* kFilterName = "Geodesic Distance: Fast Marching from Selected Vertices";
+
+struct ServerRun {
+  int exitCode = -1;
+  std::string output;  ///< stdout and stderr of meshlabserver (its log)
+};
+
+/// Runs the staged meshlabserver under Xvfb with the given arguments.
+ServerRun meshlabserver(const std::string& args) {
+  const std::string cmd = "cd '" + kOut + "' && xvfb-run -a stdbuf -oL '" + kStage + "/bin/meshlabserver' " + args + " 2>&1";
+  ServerRun run;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return run;
+  std::array<char, 4096> buf;
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) run.output.append(buf.data(), n);
+  const int status = pclose(pipe);
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return run;
+}
+
+std::string fileContents(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+bool fileExists(const std::string& path) { return std::ifstream(path).good(); }
+
+TEST(Meshlabserver, ListsTheFilter) {
+  const ServerRun run = meshlabserver("-d '" + kOut + "filters.txt'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const std::string list = fileContents(kOut + "filters.txt");
+  EXPECT_NE(list.find(kFilterName), std::string::npos) << "the filter is not in meshlabserver's list";
+  EXPECT_NE(run.output.find(kStage + "/lib/x86_64-linux-gnu/meshlab/plugins"), std::string::npos)
+      << "meshlabserver did not load plugins from the staged prefix:\n" << run.output;
+}
+
+TEST(Meshlabserver, FandiskDistanceFromVertex0MatchesCoreAndSimpleTruths) {
+  const std::string in = test::meshPath("fandisk.off");
+  const std::string out = kOut + "fandisk_fm.ply";
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + in + "' -o '" + out + "' -m vq vc sa -s '" + kResources +
+                                "fast_marching_vertex0.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("Reached 6475 of 6475 vertices"), std::string::npos) << run.output;
+
+  CoreMesh result;
+  LoadedAttributes attributes;
+  ASSERT_TRUE(loadMesh(out, result, &attributes).isOk());
+  ASSERT_TRUE(attributes.vertexQuality) << "the output PLY has no vertex quality";
+  // MeshLab holds coordinates as float: run the core on the same float coordinates.
+  TriMesh input = test::loadRealMesh("fandisk.off");
+  for (Vec3& p : input.positions) p = p.cast<float>().cast<double>();
+  input = std::move(buildTriMesh(input.positions, input.triangles)).value();
+  ASSERT_EQ(result.vn, input.vertexCount());
+  ASSERT_EQ(input.topology.components, 1);
+
+  // The core on the same mesh and source (MeshLab stores quality as float).
+  Expected<FastMarchingResult> core = fastMarching(input, Metric::uniform(), {0});
+  ASSERT_TRUE(core);
+  const double h = input.meanEdgeLength();
+  int compared = 0;
+  for (int v = 0; v < input.vertexCount(); ++v) {
+    const double q = result.vert[v].Q();
+    EXPECT_NEAR(q, core->distance[v], 1e-6 * (1.0 + core->distance[v])) << "vertex " << v;
+    // Independent truths: the straight line is never longer than a path on the surface.
+    EXPECT_GE(q, (input.positions[v] - input.positions[0]).norm() - 1e-5) << "vertex " << v;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 6475);
+  EXPECT_EQ(result.vert[0].Q(), 0.0);
+  // Increasing along edges away from the source: every other vertex has a neighbour closer to
+  // the source, and every vertex is reached (quality >= 0, no -1) on this connected mesh.
+  for (int v = 1; v < input.vertexCount(); ++v) {
+    ASSERT_GT(result.vert[v].Q(), 0.0) << "vertex " << v;
+    double smallest = INFINITY;
+    for (const int* c = input.cornersBegin(v); c != input.cornersEnd(v); ++c) {
+      smallest = std::min(smallest, double(result.vert[input.vertex(TriMesh::next(*c))].Q()));
+      smallest = std::min(smallest, double(result.vert[input.vertex(TriMesh::prev(*c))].Q()));
+    }
+    EXPECT_LT(smallest, result.vert[v].Q()) << "vertex " << v << " is a local minimum";
+    // ...and the step to that neighbour is at most one edge long (with margin): no jumps.
+    EXPECT_LT(result.vert[v].Q() - smallest, 4.0 * h) << "vertex " << v;
+  }
+  // Colored: the ramp gives the source and the farthest vertex different colours.
+  int farthest = 0;
+  for (int v = 0; v < result.vn; ++v)
+    if (result.vert[v].Q() > result.vert[farthest].Q()) farthest = v;
+  EXPECT_NE(result.vert[0].C(), result.vert[farthest].C());
+}
+
+TEST(Meshlabserver, VoronoiColorsOneRegionPerSelectedVertex) {
+  const std::string out = kOut + "fandisk_voronoi.ply";
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + test::meshPath("fandisk.off") + "' -o '" + out + "' -m vq vc sa -s '" +
+                                kResources + "fast_marching_voronoi.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  CoreMesh result;
+  ASSERT_TRUE(loadMesh(out, result).isOk());
+  // rint(vi / 500) == vi / 500 selects vertices 0, 500, ..., 6000: 13 sources, 13 colours.
+  std::set<unsigned> colors;
+  for (const auto& v : result.vert) colors.insert(*reinterpret_cast<const unsigned*>(&v.cC()[0]));
+  EXPECT_EQ(colors.size(), 13u);
+  for (int s = 0; s < result.vn; s += 500) EXPECT_EQ(result.vert[s].Q(), 0.0) << "source " << s;
+}
+
+TEST(Meshlabserver, UniformRemeshOfFandiskIsAValidMeshOfTheSameTopology) {
+  const std::string out = kOut + "fandisk_uniform.ply";
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + test::meshPath("fandisk.off") + "' -o '" + out + "' -m sa -s '" +
+                                      kResources + "uniform_remesh_10pct.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("Topology kept"), std::string::npos) << run.output;
+  const auto result = loadTriMesh(out);
+  ASSERT_TRUE(result) << result.status().message;
+  EXPECT_GE(result->vertexCount(), 647);
+  EXPECT_LE(result->vertexCount(), 700);
+  EXPECT_EQ(result->topology.components, 1);
+  EXPECT_EQ(result->topology.genus, 0);
+  EXPECT_EQ(result->topology.boundaryEdges, 0);
+  EXPECT_TRUE(result->topology.isManifold());
+  EXPECT_EQ(result->topology.inconsistentEdges, 0);
+  EXPECT_EQ(2 * result->vertexCount() - 4, result->faceCount()) << "a closed genus-0 triangle mesh has F = 2V - 4";
+}
+
+// Refinement 2 at 30% (fronts on the input subdivided twice, then the default relaxation): still
+// a valid mesh of the input's topology with well-shaped triangles.
+TEST(Meshlabserver, RefinedUniformRemeshOfFandiskHasWellShapedTriangles) {
+  const std::string out = kOut + "fandisk_uniform_refined.ply";
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + test::meshPath("fandisk.off") + "' -o '" + out + "' -m sa -s '" +
+                                      kResources + "uniform_remesh_30pct_refined.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto result = loadTriMesh(out);
+  ASSERT_TRUE(result) << result.status().message;
+  EXPECT_EQ(result->topology.components, 1);
+  EXPECT_EQ(result->topology.genus, 0);
+  EXPECT_EQ(result->topology.boundaryEdges, 0);
+  EXPECT_TRUE(result->topology.isManifold());
+  const AngleStatistics angles = angleStatistics(*result);
+  std::printf("fandisk 30%%, refinement 2: %d vertices, angle std %.1f deg, smallest %.1f deg, %.2f %% under 30 deg\n",
+              result->vertexCount(), angles.stdDegrees, angles.minDegrees, 100 * angles.shareMinBelow30);
+  EXPECT_GE(angles.minDegrees, 20.0);
+  EXPECT_LE(angles.shareMinBelow30, 0.01);
+}
+
+TEST(Meshlabserver, UniformRemeshKeepsTheBoundaryLoopsOfTheShark) {
+  const std::string out = kOut + "shark_uniform.ply";
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + test::meshPath("mech-holes-shark.off") + "' -o '" + out + "' -m sa -s '" +
+                                      kResources + "uniform_remesh_10pct.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto result = loadTriMesh(out);
+  ASSERT_TRUE(result) << result.status().message;
+  EXPECT_EQ(result->topology.boundaryLoops, 4);
+  EXPECT_EQ(result->topology.components, 1);
+  EXPECT_EQ(result->topology.genus, 0);
+  EXPECT_TRUE(result->topology.isManifold());
+  EXPECT_EQ(result->topology.inconsistentEdges, 0);
+}
+
+// --- The acceptance runs, one resources/acceptance/*.mlx each -----------------------
+
+class UniformAcceptance : public ::testing::TestWithParam<std::tuple<std::string, int>> {};
+
+// Output through the real meshlabserver: manifold, oriented, the input's components, genus and
+// boundary loops, and the vertex count the log promises (target + added - left out); on fandisk,
+// bunny00 and armadillo also the triangle quality bounds (smallest angle >= 20 deg, at most 1% of
+// triangles with an angle under 30 deg) at the scripts' default settings.
+TEST_P(UniformAcceptance, TopologyKeptThroughMeshlabserver) {
+  const auto& [name, pct] = GetParam();
+  const std::string script = kResources + "acceptance/uniform_" + name + "_" + std::to_string(pct) + "pct.mlx";
+  const std::string out = kOut + "acceptance_" + name + "_" + std::to_string(pct) + ".ply";
+  std::remove(out.c_str());
+  const ServerRun run =
+      meshlabserver("-i '" + test::meshPath(name + ".off") + "' -o '" + out + "' -m sa -s '" + script + "'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto input = loadTriMesh(test::meshPath(name + ".off"));
+  const auto result = loadTriMesh(out);
+  ASSERT_TRUE(input && result) << run.output;
+  const Topology &a = input->topology, &b = result->topology;
+  EXPECT_TRUE(b.isManifold());
+  EXPECT_EQ(b.inconsistentEdges, 0);
+  EXPECT_EQ(b.isolatedVertices, 0);
+  EXPECT_EQ(b.components, a.components);
+  EXPECT_EQ(b.genus, a.genus);
+  EXPECT_EQ(b.boundaryLoops, a.boundaryLoops);
+  const int target = input->vertexCount() * pct / 100;
+  const int added = test::numberBefore(run.output, "added to make the triangulation valid");
+  ASSERT_GE(added, 0) << run.output;
+  EXPECT_EQ(result->vertexCount(), target + added) << run.output;
+  const AngleStatistics q = angleStatistics(*result);
+  std::printf("%s %d%%: %d vertices (%d added), genus %d, %d loops, %d components; angle std %.1f, min %.1f, "
+              "%.2f %% under 30 deg\n",
+              name.c_str(), pct, result->vertexCount(), added, b.genus, b.boundaryLoops, b.components, q.stdDegrees,
+              q.minDegrees, 100 * q.shareMinBelow30);
+  if (name == "fandisk" || name == "bunny00" || name == "armadillo") {  // the quality bounds
+    EXPECT_GE(q.minDegrees, 20.0);
+    EXPECT_LE(q.shareMinBelow30, 0.01);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, UniformAcceptance,
+                         ::testing::Combine(::testing::Values("fandisk", "bunny00", "armadillo", "knot2",
+                                                              "mech-holes-shark", "elephant"),
+                                            ::testing::Values(10, 30)),
+                         [](const ::testing::TestParamInfo<std::tuple<std::string, int>>& p) {
+                           std::string n = std::get<0>(p.param);
+                           for (char& ch : n)
+                             if (ch == '-') ch = '_';
+                           return n + "_" + std::to_string(std::get<1>(p.param));
+                         });
+
+// Curvature-adaptive remeshing through meshlabserver: valid output, and the field logged.
+TEST(Meshlabserver, AdaptiveCurvatureRemeshOfFandisk) {
+  const std::string out = kOut + "fandisk_adaptive.ply";
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + test::meshPath("fandisk.off") + "' -o '" + out + "' -m sa -s '" +
+                                      kResources + "adaptive_curvature_10pct.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("Field: total curvature"), std::string::npos) << run.output;
+  const auto result = loadTriMesh(out);
+  ASSERT_TRUE(result);
+  EXPECT_TRUE(result->topology.isManifold());
+  EXPECT_EQ(result->topology.inconsistentEdges, 0);
+  EXPECT_EQ(result->topology.components, 1);
+  EXPECT_EQ(result->topology.genus, 0);
+  EXPECT_EQ(result->topology.boundaryEdges, 0);
+  EXPECT_EQ(result->vertexCount(), 647 + test::numberBefore(run.output, "added to make the triangulation valid"));
+}
+
+// Any filter that writes quality drives the adaptive remeshing: curvature into quality, then
+// the adaptive filter on "Vertex quality", in one script.
+TEST(Meshlabserver, QualityFromAnotherFilterDrivesTheAdaptiveRemesh) {
+  const std::string out = kOut + "fandisk_quality_adaptive.ply";
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + test::meshPath("fandisk.off") + "' -o '" + out + "' -m sa -s '" +
+                                      kResources + "quality_driven_adaptive_10pct.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("written to vertex quality"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("Field: vertex quality"), std::string::npos) << run.output;
+  const auto result = loadTriMesh(out);
+  ASSERT_TRUE(result);
+  EXPECT_TRUE(result->topology.isManifold());
+  EXPECT_EQ(result->topology.genus, 0);
+}
+
+// --- Bad input: a clear message in the log, a non-zero exit, no output, input untouched ----
+
+struct BadInputCase {
+  std::string name;
+  std::string meshText;  ///< OFF file content
+  std::string script;    ///< resources/*.mlx
+  std::string expectedMessage;
+};
+
+void expectCleanFailure(const BadInputCase& c) {
+  const std::string in = kOut + c.name + ".off";
+  {
+    std::ofstream f(in);
+    f << c.meshText;
+  }
+  const std::string before = fileContents(in);
+  const std::string out = kOut + c.name + "_out.ply";
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + in + "' -o '" + out + "' -m vq vc sa -s '" + kResources + c.script + "'");
+  // 255 is meshlabserver's "Failed to apply script file"; an abort or a crash gives 128 + signal.
+  EXPECT_EQ(run.exitCode, 255) << run.output;
+  EXPECT_NE(run.output.find(c.expectedMessage), std::string::npos)
+      << "expected '" << c.expectedMessage << "' in the log:\n" << run.output;
+  EXPECT_NE(run.output.find(std::string(kFilterName) + " failed"), std::string::npos) << run.output;
+  EXPECT_FALSE(fileExists(out)) << "a failed run wrote an output mesh";
+  EXPECT_EQ(fileContents(in), before) << "the input file changed";
+}
+
+const char* kTwoTriangles = "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 3 2\n";
+
+TEST(MeshlabserverBadInput, PointCloud) {
+  expectCleanFailure({"point_cloud", "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n", "fast_marching_vertex0.mlx",
+                      "the mesh has no faces"});
+}
+
+TEST(MeshlabserverBadInput, EmptySelection) {
+  expectCleanFailure({"no_selection", kTwoTriangles, "fast_marching_no_selection.mlx", "no vertex is selected"});
+}
+
+TEST(MeshlabserverBadInput, NonManifoldEdge) {
+  // Three triangles share the edge 0-1.
+  expectCleanFailure({"non_manifold", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n",
+                      "fast_marching_vertex0.mlx", "non-manifold edges"});
+}
+
+TEST(MeshlabserverBadInput, NanCoordinates) {
+  expectCleanFailure({"nan_coordinates", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 nan 0\n1 1 0\n3 0 1 2\n3 1 3 2\n",
+                      "fast_marching_vertex0.mlx", "non-finite coordinate"});
+}
+
+}  // namespace
+}  // namespace gr

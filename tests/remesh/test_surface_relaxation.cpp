@@ -1,0 +1,174 @@
+// Tangential relaxation on the input surface (surface_relaxation.h). Oracles: invariants of the
+// pass (vertices stay on the input surface, the connectivity keeps its topology, recounted
+// independently; boundary and crease vertices do not move; in the plane the smallest angle never
+// decreases, since moves and Delaunay flips both keep or raise it), and what it is for: better
+// angles than the triangulation it starts from.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/measure/evaluation.h"
+#include "core/geodesic/farthest_point_sampling.h"
+#include "core/remesh/geodesic_delaunay.h"
+#include "core/remesh/surface_relaxation.h"
+#include "tests/support/test_support.h"
+
+namespace gr {
+namespace {
+
+/// Smallest angle of a mesh in degrees, recomputed from the positions.
+double smallestAngle(const TriMesh& m) { return test::recountAngles(m).smallestDegrees; }
+
+/// The geodesic Delaunay triangulation of `count` farthest-point samples of `input`.
+DelaunayResult triangulate(const TriMesh& input, int count) {
+  FastMarcher marcher(input, Metric::uniform());
+  FpsParams fps;
+  fps.targetCount = count;
+  const Expected<FpsResult> samples = farthestPointSampling(marcher, fps);
+  EXPECT_TRUE(samples);
+  Expected<DelaunayResult> r = geodesicDelaunay(marcher, samples->points);
+  EXPECT_TRUE(r) << r.status().message;
+  return std::move(*r);
+}
+
+void expectSameTopology(const DelaunayResult& before, const TriMesh& after) {
+  const test::Recount a = test::recount(before.mesh.triangles, before.mesh.vertexCount());
+  const test::Recount b = test::recount(after.triangles, after.vertexCount());
+  EXPECT_TRUE(b.manifoldEdges && b.manifoldVertices && b.oriented);
+  EXPECT_EQ(b.components, a.components);
+  EXPECT_EQ(b.genusSum, a.genusSum);
+  EXPECT_EQ(b.boundaryLoops, a.boundaryLoops);
+  EXPECT_EQ(after.faceCount(), before.mesh.faceCount());
+}
+
+TEST(SurfaceRelaxation, PlaneStaysPlanarKeepsBoundaryAndRaisesTheSmallestAngle) {
+  const TriMesh input = test::planeGrid(60, 1.0, 0.3, 7);
+  const DelaunayResult d = triangulate(input, 300);
+  TriMesh out = d.mesh;
+  std::vector<SurfacePoint> points = d.samplePoint;
+  const Expected<RelaxationResult> r = relaxOnSurface(out, points, input);
+  ASSERT_TRUE(r) << r.status().message;
+  EXPECT_EQ(r->iterations, 3);
+  EXPECT_GT(r->moves, 300);
+  expectSameTopology(d, out);
+  for (int v = 0; v < out.vertexCount(); ++v) {
+    EXPECT_EQ(out.positions[v].z(), 0.0);
+    EXPECT_LT((points[v].position(input) - out.positions[v]).norm(), 1e-12);
+    EXPECT_GE(out.positions[v].x(), 0.0);
+    EXPECT_LE(out.positions[v].x(), 1.0);
+  }
+  // Boundary vertices (an edge with one face) did not move.
+  int boundaryVertices = 0;
+  for (int c = 0; c < 3 * out.faceCount(); ++c)
+    if (out.oppositeCorner[c] < 0) {
+      const int v = out.vertex(TriMesh::next(c));
+      EXPECT_EQ(out.positions[v], d.mesh.positions[v]);
+      ++boundaryVertices;
+    }
+  EXPECT_GT(boundaryVertices, 20);
+  const double before = smallestAngle(d.mesh), after = smallestAngle(out);
+  const AngleStatistics a0 = angleStatistics(d.mesh), a1 = angleStatistics(out);
+  std::printf("plane: smallest angle %.1f -> %.1f deg, angle std %.1f -> %.1f deg, under 30: %.2f -> %.2f %%\n", before,
+              after, a0.stdDegrees, a1.stdDegrees, 100 * a0.shareMinBelow30, 100 * a1.shareMinBelow30);
+  EXPECT_GE(after, before - 1e-9);
+  EXPECT_LT(a1.stdDegrees, a0.stdDegrees);
+}
+
+TEST(SurfaceRelaxation, SphereVerticesStayOnTheInputSurface) {
+  const TriMesh input = test::icosphere(5);  // 10,242 vertices
+  const DelaunayResult d = triangulate(input, 1500);
+  TriMesh out = d.mesh;
+  std::vector<SurfacePoint> points = d.samplePoint;
+  const Expected<RelaxationResult> r = relaxOnSurface(out, points, input);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->fixedVertices, 0);  // closed and smooth: every vertex may move
+  expectSameTopology(d, out);
+  // On a facet of the icosphere: radius between the facets' inradius and 1.
+  const double edge = input.meanEdgeLength();
+  for (int v = 0; v < out.vertexCount(); ++v) {
+    const double radius = out.positions[v].norm();
+    EXPECT_LE(radius, 1.0 + 1e-12);
+    EXPECT_GE(radius, 1.0 - edge * edge);
+    EXPECT_LT((points[v].position(input) - out.positions[v]).norm(), 1e-12);
+  }
+  EXPECT_GT(angleStatistics(out).minDegrees, angleStatistics(d.mesh).minDegrees);
+  EXPECT_GE(angleStatistics(out).minDegrees, 25.0);
+}
+
+TEST(SurfaceRelaxation, CreaseAndCornerVerticesDoNotMove) {
+  const TriMesh input = test::loadRealMesh("fandisk.off");
+  const DelaunayResult d = triangulate(input, 648);
+  // Output vertices on an input vertex with an edge sharper than 60 degrees, found here from the
+  // input's face normals.
+  std::vector<int> onCrease;
+  for (int v = 0; v < d.mesh.vertexCount(); ++v) {
+    const int iv = d.samplePoint[v].vertex;
+    if (iv < 0) continue;
+    bool sharp = false;
+    for (const int* c = input.cornersBegin(iv); c != input.cornersEnd(iv); ++c) {
+      const int e = TriMesh::prev(*c), o = input.oppositeCorner[e];
+      const auto normal = [&](int f) {
+        const Tri& t = input.triangles[f];
+        return Vec3((input.positions[t[1]] - input.positions[t[0]]).cross(input.positions[t[2]] - input.positions[t[0]]).normalized());
+      };
+      sharp |= o < 0 || normal(*c / 3).dot(normal(o / 3)) < std::cos(60.0 * M_PI / 180.0);
+    }
+    if (sharp) onCrease.push_back(v);
+  }
+  ASSERT_GT(onCrease.size(), 30u);
+  TriMesh out = d.mesh;
+  std::vector<SurfacePoint> points = d.samplePoint;
+  const Expected<RelaxationResult> r = relaxOnSurface(out, points, input);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->fixedVertices, static_cast<int>(onCrease.size()));
+  for (const int v : onCrease) EXPECT_EQ(out.positions[v], d.mesh.positions[v]) << "vertex " << v;
+  expectSameTopology(d, out);
+  // The surface error stays that of the triangulation (tips and ridges are not smoothed away).
+  const double diag = input.boundingBoxDiagonal();
+  const double before = std::max(surfaceDistance(d.mesh, input).max, surfaceDistance(input, d.mesh).max) / diag;
+  const double after = std::max(surfaceDistance(out, input).max, surfaceDistance(input, out).max) / diag;
+  std::printf("fandisk 10%%: two-sided Hausdorff %.3f -> %.3f %% of the diagonal; smallest angle %.1f -> %.1f deg\n",
+              100 * before, 100 * after, smallestAngle(d.mesh), smallestAngle(out));
+  EXPECT_LE(after, 1.1 * before);
+  EXPECT_GE(smallestAngle(out), 25.0);
+}
+
+TEST(SurfaceRelaxation, ZeroIterationsChangeNothing) {
+  const TriMesh input = test::planeGrid(30, 1.0, 0.3, 3);
+  const DelaunayResult d = triangulate(input, 80);
+  TriMesh out = d.mesh;
+  std::vector<SurfacePoint> points = d.samplePoint;
+  RelaxationParams params;
+  params.iterations = 0;
+  const Expected<RelaxationResult> r = relaxOnSurface(out, points, input, params);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->moves, 0);
+  EXPECT_EQ(out.positions, d.mesh.positions);
+  EXPECT_EQ(out.triangles, d.mesh.triangles);
+}
+
+TEST(SurfaceRelaxation, BadInputIsReportedAndChangesNothing) {
+  const TriMesh input = test::planeGrid(30, 1.0, 0.3, 3);
+  const DelaunayResult d = triangulate(input, 80);
+  TriMesh out = d.mesh;
+  std::vector<SurfacePoint> points = d.samplePoint;
+  points.pop_back();  // one point short
+  Expected<RelaxationResult> r = relaxOnSurface(out, points, input);
+  ASSERT_FALSE(r);
+  EXPECT_EQ(r.status().code, StatusCode::InvalidInput);
+  EXPECT_EQ(out.positions, d.mesh.positions);
+
+  points = d.samplePoint;
+  points[5] = SurfacePoint::inFace(input.faceCount(), Vec3(1, 0, 0));  // a face out of range
+  r = relaxOnSurface(out, points, input);
+  ASSERT_FALSE(r);
+  EXPECT_EQ(r.status().code, StatusCode::InvalidInput);
+  EXPECT_EQ(out.positions, d.mesh.positions);
+}
+
+}  // namespace
+}  // namespace gr

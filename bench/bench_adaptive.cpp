@@ -159,7 +159,7 @@ gr::Expected<Run> remesh(const gr::TriMesh& mesh, const gr::Metric& metric, int 
   gr::Expected<gr::FpsResult> s = gr::farthestPointSampling(marcher, fps);
   const double t2 = cpuSeconds();
   if (!s) return gr::Status{s.status().code, "sampling: " + s.status().message};
-  gr::Expected<gr::DelaunayResult> d = gr::geodesicDelaunay(marcher, std::move(s->points));
+  gr::Expected<gr::DelaunayResult> d = gr::geodesicDelaunay(marcher, std::move(s->origin));
   const double t3 = cpuSeconds();
   if (!d) return gr::Status{d.status().code, "triangulation: " + d.status().message};
   run.result = std::move(*d);

@@ -156,7 +156,7 @@ std::optional<OursRun> runOurs(benchmark::State& state, const BenchMesh& bm, int
     state.SkipWithError(("sampling: " + s.status().message).c_str());
     return std::nullopt;
   }
-  gr::Expected<gr::DelaunayResult> d = gr::geodesicDelaunay(marcher, std::move(s->points));
+  gr::Expected<gr::DelaunayResult> d = gr::geodesicDelaunay(marcher, std::move(s->origin));
   const double t3 = cpuSeconds();
   if (!d) {
     state.SkipWithError(("triangulation: " + d.status().message).c_str());
@@ -164,7 +164,7 @@ std::optional<OursRun> runOurs(benchmark::State& state, const BenchMesh& bm, int
   }
   gr::RelaxationParams relax;
   relax.iterations = variant.relaxation;
-  gr::Expected<gr::RelaxationResult> r = gr::relaxOnSurface(d->mesh, d->samplePoint, bm.tri, relax);
+  gr::Expected<gr::RelaxationResult> r = gr::relaxOnSurface(d->mesh, d->origin, bm.tri, relax);
   const double t4 = cpuSeconds();
   if (!r) {
     state.SkipWithError(("relaxation: " + r.status().message).c_str());

@@ -77,7 +77,7 @@ Status applyFastMarching(MeshDocument& doc, const RichParameterList& params, Fil
   if (colorBy == int(ColorBy::Distance))
     adapters::colorByRamp(m, view, result->distance, 0.0, result->maxDistance);
   else
-    adapters::colorByLabel(m, view, result->nearestSource, static_cast<int>(sources.size()));
+    adapters::colorByLabel(m, view, result->cell, static_cast<int>(sources.size()));
   mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
 
   const double ms =

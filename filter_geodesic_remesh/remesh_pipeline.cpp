@@ -125,14 +125,14 @@ Status remeshToNewLayer(MeshDocument& doc, const CurrentMesh& current, const Rem
   MeshModel* out = doc.addNewMesh("", label, true);
   if (copyColor) out->updateDataMask(MeshModel::MM_VERTCOLOR);
   if (copyQuality) out->updateDataMask(MeshModel::MM_VERTQUALITY);
-  std::vector<SurfacePoint> origin(result.samplePoint.size());
+  std::vector<SurfacePoint> origin(result.origin.size());
   for (size_t i = 0; i < origin.size(); ++i) {
-    origin[i] = fine->toOriginal(surface, result.samplePoint[i]);
+    origin[i] = fine->originOf(surface, result.origin[i]);
     if (origin[i].face >= 0 && !flipped.empty() && flipped[origin[i].face]) std::swap(origin[i].bary[1], origin[i].bary[2]);
   }
   adapters::writeMesh(result.mesh, out->cm, m, view, origin, copyColor, copyQuality);
   if (request.labelInput) {  // the input's vertices keep their indices in the subdivision
-    const std::vector<int> region(result.region.begin(), result.region.begin() + mesh.vertexCount());
+    const std::vector<int> region(result.cell.begin(), result.cell.begin() + mesh.vertexCount());
     adapters::writeVertexQuality(m, view, std::vector<double>(region.begin(), region.end()), -1.0);
     adapters::colorByLabel(m, view, region, result.mesh.vertexCount());
     mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);

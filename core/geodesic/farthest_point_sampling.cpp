@@ -17,7 +17,7 @@ namespace {
 SurfacePoint farthestPointNear(const FastMarcher& marcher, int v, const std::vector<Vec3>& samplePosition, double* u) {
   const TriMesh& mesh = marcher.mesh();
   const std::vector<double>& U = marcher.distance();
-  const std::vector<int>& label = marcher.label();
+  const std::vector<int>& label = marcher.cell();
   constexpr int kMaxFaces = 64, kMaxVertices = 64;
   int faces[kMaxFaces], nf = 0;
   int verts[kMaxVertices], nvtx = 0;
@@ -135,7 +135,7 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
     if (params.subVertexPlacement && std::isfinite(nextU) && !onBoundary[next])
       point = farthestPointNear(marcher, next, samplePosition, &nextU);
     r.samples.push_back(next);
-    r.points.push_back(point);
+    r.origin.push_back(point);
     samplePosition.push_back(point.position(mesh));
     r.insertionDistance.push_back(nextU);
     if (Status s = marcher.addSource(point, static_cast<int>(r.samples.size()) - 1); !s) return s;
@@ -143,7 +143,7 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
     if (point.vertex < 0 && marcher.acceptedOrder().empty()) {
       // A point that is nearest to no vertex would have an empty Voronoi cell, and no place in
       // the triangulation: the sample goes back to the farthest vertex (the field is unchanged).
-      r.points.back() = SurfacePoint::atVertex(next);
+      r.origin.back() = SurfacePoint::atVertex(next);
       samplePosition.back() = mesh.positions[next];
       if (Status s = marcher.addSource(next, static_cast<int>(r.samples.size()) - 1); !s) return s;
       if (Status s = marcher.propagate(); !s) return s;
@@ -166,7 +166,7 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
   }
   r.coveringRadius = std::max(topU(farthest), topU(farthestOnBoundary));
   r.distance = U;
-  r.region = marcher.label();
+  r.cell = marcher.cell();
   return r;
 }
 

@@ -42,9 +42,9 @@ struct FpsParams {
 
 struct FpsResult {
   std::vector<int> samples;      ///< the farthest vertex at each step, in the order they were chosen
-  std::vector<SurfacePoint> points;  ///< the samples themselves: samples[i], or a point near it (subVertexPlacement)
+  std::vector<SurfacePoint> origin;  ///< where the samples lie: samples[i], or a point near it (subVertexPlacement)
   std::vector<double> distance;  ///< per vertex, U to the nearest sample
-  std::vector<int> region;       ///< per vertex, index into `samples` (geodesic Voronoi cell)
+  std::vector<int> cell;         ///< per vertex, its geodesic Voronoi cell: an index into `samples`
   double coveringRadius = 0.0;   ///< largest U at the end (the next sample's distance)
   std::vector<double> insertionDistance;  ///< U_n at each sample when it was chosen (inf for the first of a component)
 };

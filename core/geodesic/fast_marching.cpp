@@ -100,7 +100,7 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh
   }
   node_.assign(nv, Node{kUnreached, 0, -1});
   U_.assign(nv, kUnreached);
-  label_.assign(nv, -1);
+  cell_.assign(nv, -1);
   touched_.reserve(nv);
   accepted_.reserve(nv);
   acceptedVertices_.reserve(nv);
@@ -115,7 +115,7 @@ void FastMarcher::reset() {
   for (int slot : touched_) {
     node_[slot] = Node{kUnreached, 0, -1};
     U_[vertexOf_[slot]] = kUnreached;
-    label_[vertexOf_[slot]] = -1;
+    cell_[vertexOf_[slot]] = -1;
   }
   touched_.clear();
   accepted_.clear();
@@ -379,7 +379,7 @@ void FastMarcher::endRun() {
   // The public arrays: only vertices this run changed.
   const auto publish = [this](int slot) {
     U_[vertexOf_[slot]] = node_[slot].u;
-    label_[vertexOf_[slot]] = node_[slot].label;
+    cell_[vertexOf_[slot]] = node_[slot].label;
   };
   acceptedVertices_.clear();
   for (int slot : accepted_) {
@@ -410,7 +410,7 @@ Expected<FastMarchingResult> fastMarching(const TriMesh& mesh, const Metric& met
   if (Status s = marcher.propagate(params, std::move(progress)); !s) return s;
   FastMarchingResult r;
   r.distance = marcher.distance();
-  r.nearestSource = marcher.label();
+  r.cell = marcher.cell();
   r.acceptedOrder = marcher.acceptedOrder();
   for (int v : r.acceptedOrder) r.maxDistance = std::max(r.maxDistance, r.distance[v]);
   return r;

@@ -48,7 +48,7 @@ struct FastMarchingParams {
 
 struct FastMarchingResult {
   std::vector<double> distance;    ///< per vertex, U; kUnreached (+inf) if not reached
-  std::vector<int> nearestSource;  ///< per vertex, index into the source list; -1 if not reached
+  std::vector<int> cell;  ///< per vertex, index into the source list; -1 if not reached
   std::vector<int> acceptedOrder;  ///< reached vertices in the order they were accepted
   double maxDistance = 0.0;        ///< largest finite U
   int reachedCount() const { return static_cast<int>(acceptedOrder.size()); }
@@ -76,7 +76,7 @@ class FastMarcher {
 
   /// U and nearest-source label per vertex, as of the end of the last propagate().
   const std::vector<double>& distance() const { return U_; }
-  const std::vector<int>& label() const { return label_; }
+  const std::vector<int>& cell() const { return cell_; }
   /// Vertices accepted by the last propagate(), in order: all reached vertices for a first
   /// run, the improved ones for an incremental run.
   const std::vector<int>& acceptedOrder() const { return acceptedVertices_; }
@@ -127,7 +127,7 @@ class FastMarcher {
   std::vector<FarSplit> farSplits_;
   std::vector<Node> node_;
   std::vector<double> U_;           ///< public copies of node_.u and node_.label, updated at the
-  std::vector<int> label_;          ///< end of each run for the vertices it changed
+  std::vector<int> cell_;           ///< end of each run for the vertices it changed
   int run_ = 0;
   bool runOpen_ = false;
   std::vector<int> touched_;        ///< slots given a finite value since reset()

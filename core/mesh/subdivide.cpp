@@ -73,7 +73,7 @@ Expected<Subdivision> subdivideMidpoint(const TriMesh& mesh, int levels) {
   return s;
 }
 
-SurfacePoint Subdivision::toOriginal(const TriMesh& original, const SurfacePoint& p) const {
+SurfacePoint Subdivision::originOf(const TriMesh& original, const SurfacePoint& p) const {
   if (p.vertex >= 0) return origin[p.vertex];
   const int of = originalFace[p.face];
   const Tri& t = mesh.triangles[p.face];

@@ -24,7 +24,7 @@ struct Subdivision {
   std::vector<int> originalFace;
 
   /// A point of `mesh` as a point of the original mesh (`original` is the mesh subdivided).
-  SurfacePoint toOriginal(const TriMesh& original, const SurfacePoint& p) const;
+  SurfacePoint originOf(const TriMesh& original, const SurfacePoint& p) const;
 };
 
 /// levels >= 0 (0 returns a copy). Fails with InvalidInput on a negative level count, and

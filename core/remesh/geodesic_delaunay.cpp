@@ -142,7 +142,7 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
   {
     std::vector<char> reached(mesh.topology.components, 0);
     for (int v = 0; v < mesh.vertexCount(); ++v)
-      if (marcher.label()[v] >= 0 && mesh.topology.componentOfVertex[v] >= 0) reached[mesh.topology.componentOfVertex[v]] = 1;
+      if (marcher.cell()[v] >= 0 && mesh.topology.componentOfVertex[v] >= 0) reached[mesh.topology.componentOfVertex[v]] = 1;
     bool added = false;
     for (int v = 0; v < mesh.vertexCount(); ++v) {
       const int c = mesh.topology.componentOfVertex[v];
@@ -156,7 +156,7 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
       if (Status s = marcher.propagate(); !s) return s;
   }
   for (int round = 0;; ++round) {
-    const std::vector<int>& label = marcher.label();
+    const std::vector<int>& label = marcher.cell();
     const int cells = static_cast<int>(samples.size());
     Dual dual = buildDual(mesh, label, cells);
     std::vector<int> bad = dual.badCells;
@@ -195,19 +195,19 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
             if (out->valence(c) > 0) {
               index[c] = static_cast<int>(kept.size());
               kept.push_back(positions[c]);
-              r.samplePoint.push_back(samples[c]);
+              r.origin.push_back(samples[c]);
             }
           std::vector<Tri> tris = out->triangles;
           for (Tri& tri : tris)
             for (int& v : tri) v = index[v];
           out = buildTriMesh(std::move(kept), std::move(tris));
-          r.region = label;
-          for (int& l : r.region)
+          r.cell = label;
+          for (int& l : r.cell)
             if (l >= 0) l = index[l];
           r.droppedSamples = cells - out->vertexCount();
         } else {
-          r.samplePoint = samples;
-          r.region = label;
+          r.origin = samples;
+          r.cell = label;
         }
         if (params.delaunayFlips) r.flippedEdges = flipToDelaunay(*out, params.flips).flips;
         r.mesh = std::move(out).value();

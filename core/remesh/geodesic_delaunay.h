@@ -48,12 +48,12 @@ struct DelaunayParams {
 
 struct DelaunayResult {
   TriMesh mesh;                     ///< output: one vertex per sample, at the sample's position
-  std::vector<SurfacePoint> samplePoint;  ///< per output vertex, the point of the input it sits on
+  std::vector<SurfacePoint> origin;  ///< per output vertex, the point of the input it sits on
   int addedSamples = 0;             ///< samples inserted by the repair
   int droppedSamples = 0;           ///< samples inside faces left out: nearest to no vertex
   int repairRounds = 0;
   int flippedEdges = 0;             ///< edges flipped to make the result locally Delaunay
-  std::vector<int> region;          ///< per input vertex, its output vertex (Voronoi cell)
+  std::vector<int> cell;            ///< per input vertex, its Voronoi cell: an output vertex
 };
 
 /// Fails with InvalidInput (no samples, a sample out of range, a non-manifold mesh, faces not oriented
@@ -63,7 +63,7 @@ Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& met
                                           const DelaunayParams& params = {}, Progress progress = {});
 
 /// The same on an engine that already holds the field of `samples` with labels 0..n-1 in that
-/// order (as farthestPointSampling leaves it, with FpsResult::points): no propagation from
+/// order (as farthestPointSampling leaves it, with FpsResult::origin): no propagation from
 /// scratch. Samples may lie inside faces; the ones the repair adds are vertices.
 Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<SurfacePoint> samples,
                                           const DelaunayParams& params = {}, Progress progress = {});

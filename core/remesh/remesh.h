@@ -28,7 +28,7 @@ struct RemeshParams {
 
 struct RemeshResult {
   FpsResult sampling;
-  DelaunayResult mesh;  ///< the output: mesh.mesh, mesh.samplePoint (after the relaxation), ...
+  DelaunayResult mesh;  ///< the output: mesh.mesh, mesh.origin (after the relaxation), ...
   RelaxationResult relaxation;
 };
 

@@ -54,7 +54,7 @@ struct RelaxationResult {
 };
 
 /// Relaxes `output` in place on the surface of `input`. `points[i]` is where output vertex i lies
-/// on the input (as DelaunayResult::samplePoint) and is updated with it. Fails (InvalidInput) if
+/// on the input (as DelaunayResult::origin) and is updated with it. Fails (InvalidInput) if
 /// the sizes disagree, a point is out of range, or either mesh is not manifold; then nothing changes.
 Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
                                           const RelaxationParams& params = {});

@@ -96,8 +96,8 @@ TEST(FarthestPointSampling, FormsANet) {
   std::set<int> regions;
   for (int v = 0; v < m.vertexCount(); ++v) {
     ASSERT_LE(r->distance[v], r->coveringRadius) << v;
-    ASSERT_GE(r->region[v], 0);
-    regions.insert(r->region[v]);
+    ASSERT_GE(r->cell[v], 0);
+    regions.insert(r->cell[v]);
   }
   EXPECT_EQ(regions.size(), 300u);
   // Packing: each sample is at least the covering radius away from every other one.
@@ -172,7 +172,7 @@ TEST(FarthestPointSampling, RejectsImpossibleParameters) {
 /// A perfect farthest-point net has a ratio >= 1.
 double netRatio(const TriMesh& m, const FpsResult& r) {
   std::vector<Vec3> p;
-  for (const SurfacePoint& s : r.points) p.push_back(s.position(m));
+  for (const SurfacePoint& s : r.origin) p.push_back(s.position(m));
   double closest = kUnreached;
   for (size_t i = 0; i < p.size(); ++i)
     for (size_t j = i + 1; j < p.size(); ++j) closest = std::min(closest, (p[i] - p[j]).norm());
@@ -198,8 +198,8 @@ TEST(FarthestPointSampling, SubVertexPlacementGivesABetterNet) {
   const auto inFaces = farthestPointSampling(m, Metric::uniform(), params);
   ASSERT_TRUE(atVertices && inFaces);
   int moved = 0;
-  for (size_t i = 0; i < inFaces->points.size(); ++i) {
-    const SurfacePoint& s = inFaces->points[i];
+  for (size_t i = 0; i < inFaces->origin.size(); ++i) {
+    const SurfacePoint& s = inFaces->origin[i];
     if (s.vertex >= 0) {
       EXPECT_EQ(s.vertex, inFaces->samples[i]);
       continue;

@@ -314,7 +314,7 @@ TEST(FastMarchingInvariants, CompleteOnAConnectedMesh) {
       ASSERT_GT(r.distance[v], 0.0) << "vertex " << v;
     }
     ASSERT_TRUE(std::isfinite(r.distance[v])) << "vertex " << v;
-    ASSERT_EQ(r.nearestSource[v], 0) << "vertex " << v;
+    ASSERT_EQ(r.cell[v], 0) << "vertex " << v;
     largest = std::max(largest, r.distance[v]);
   }
   EXPECT_EQ(r.maxDistance, largest);
@@ -377,7 +377,7 @@ TEST(FastMarchingMetric, ConstantCostScalesEveryDistance) {
     int labelDiffs = 0;
     for (int v = 0; v < m.vertexCount(); ++v) {
       ASSERT_NEAR(r.distance[v], c * base.distance[v], 1e-9 * c * base.distance[v]) << "vertex " << v;
-      labelDiffs += r.nearestSource[v] != base.nearestSource[v];
+      labelDiffs += r.cell[v] != base.cell[v];
     }
     EXPECT_EQ(labelDiffs, 0);
     EXPECT_NEAR(r.maxDistance, c * base.maxDistance, 1e-9 * c * base.maxDistance);
@@ -491,7 +491,7 @@ TEST(FastMarchingSources, LabelsAreTheNearestSource) {
 
   for (int i = 0; i < k; ++i) {
     EXPECT_EQ(multi.distance[sources[i]], 0.0);
-    EXPECT_EQ(multi.nearestSource[sources[i]], i);
+    EXPECT_EQ(multi.cell[sources[i]], i);
   }
   const double band = 2.0 * h;  // labels may differ where two sources are within the FM error
   int exact = 0, labelChecked = 0, labelWrong = 0, notArgmin = 0;
@@ -510,20 +510,20 @@ TEST(FastMarchingSources, LabelsAreTheNearestSource) {
         second = d;
       }
     }
-    ASSERT_GE(multi.nearestSource[v], 0) << "vertex " << v;
-    ASSERT_LT(multi.nearestSource[v], k) << "vertex " << v;
+    ASSERT_GE(multi.cell[v], 0) << "vertex " << v;
+    ASSERT_LT(multi.cell[v], k) << "vertex " << v;
     const double diff = std::abs(multi.distance[v] - best);
     worstDiff = std::max(worstDiff, diff);
     EXPECT_LE(diff, h) << "vertex " << v;
     if (diff <= 1e-12 * best) ++exact;
-    if (multi.nearestSource[v] != arg) {
+    if (multi.cell[v] != arg) {
       ++notArgmin;
-      worstMislabelGap = std::max(worstMislabelGap, single[multi.nearestSource[v]].distance[v] - best);
+      worstMislabelGap = std::max(worstMislabelGap, single[multi.cell[v]].distance[v] - best);
     }
     if (second - best > band) {
       ++labelChecked;
-      if (multi.nearestSource[v] != arg && ++labelWrong <= 5)
-        ADD_FAILURE() << "vertex " << v << ": label " << multi.nearestSource[v] << ", nearest source " << arg
+      if (multi.cell[v] != arg && ++labelWrong <= 5)
+        ADD_FAILURE() << "vertex " << v << ": label " << multi.cell[v] << ", nearest source " << arg
                       << " (" << best << " vs " << second << ")";
     }
   }
@@ -539,9 +539,9 @@ TEST(FastMarchingSources, LabelsAreTheNearestSource) {
 TEST(FastMarchingSources, DuplicateSourceKeepsItsFirstLabel) {
   TriMesh m = test::planeGrid(10);
   FastMarchingResult r = run(m, {30, 5, 30});
-  EXPECT_EQ(r.nearestSource[30], 0);
-  EXPECT_EQ(r.nearestSource[5], 1);
-  for (int v = 0; v < m.vertexCount(); ++v) EXPECT_NE(r.nearestSource[v], 2) << "vertex " << v;
+  EXPECT_EQ(r.cell[30], 0);
+  EXPECT_EQ(r.cell[5], 1);
+  for (int v = 0; v < m.vertexCount(); ++v) EXPECT_NE(r.cell[v], 2) << "vertex " << v;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -563,10 +563,10 @@ TEST(FastMarchingLimit, StopsAtMaxDistanceLikeTheUnlimitedRun) {
         expectedReached += inside;
         if (inside) {
           ASSERT_EQ(r.distance[v], full.distance[v]) << "vertex " << v;
-          ASSERT_EQ(r.nearestSource[v], full.nearestSource[v]) << "vertex " << v;
+          ASSERT_EQ(r.cell[v], full.cell[v]) << "vertex " << v;
         } else {
           ASSERT_EQ(r.distance[v], kInf) << "vertex " << v;
-          ASSERT_EQ(r.nearestSource[v], -1) << "vertex " << v;
+          ASSERT_EQ(r.cell[v], -1) << "vertex " << v;
         }
       }
       EXPECT_EQ(r.reachedCount(), expectedReached);
@@ -595,10 +595,10 @@ TEST(FastMarchingComponents, ASourceReachesOnlyItsComponent) {
       if (comp[v] == comp[s]) {
         ++inComponent;
         ASSERT_TRUE(std::isfinite(r.distance[v])) << "vertex " << v;
-        ASSERT_EQ(r.nearestSource[v], 0);
+        ASSERT_EQ(r.cell[v], 0);
       } else {
         ASSERT_EQ(r.distance[v], kInf) << "vertex " << v;
-        ASSERT_EQ(r.nearestSource[v], -1) << "vertex " << v;
+        ASSERT_EQ(r.cell[v], -1) << "vertex " << v;
       }
     }
     EXPECT_EQ(r.reachedCount(), inComponent);
@@ -610,7 +610,7 @@ TEST(FastMarchingComponents, ASourceReachesOnlyItsComponent) {
   while (comp[other] == comp[0]) ++other;
   FastMarchingResult both = run(m, {0, other});
   EXPECT_EQ(both.reachedCount(), m.vertexCount());
-  for (int v = 0; v < m.vertexCount(); ++v) ASSERT_EQ(both.nearestSource[v], comp[v] == comp[0] ? 0 : 1);
+  for (int v = 0; v < m.vertexCount(); ++v) ASSERT_EQ(both.cell[v], comp[v] == comp[0] ? 0 : 1);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -669,7 +669,7 @@ TEST(FastMarcherEngine, ResetThenRunEqualsAFreshMarcher) {
     reused.reset();
     for (int v = 0; v < m.vertexCount(); ++v) {
       ASSERT_EQ(reused.distance()[v], kInf) << "after reset, vertex " << v;
-      ASSERT_EQ(reused.label()[v], -1) << "after reset, vertex " << v;
+      ASSERT_EQ(reused.cell()[v], -1) << "after reset, vertex " << v;
     }
     EXPECT_TRUE(reused.acceptedOrder().empty());
     const std::vector<int> sources = round == 0 ? std::vector<int>{2000, 6000} : std::vector<int>{10};
@@ -680,7 +680,7 @@ TEST(FastMarcherEngine, ResetThenRunEqualsAFreshMarcher) {
     for (size_t i = 0; i < sources.size(); ++i) ASSERT_TRUE(fresh.addSource(sources[i], int(i)).isOk());
     ASSERT_TRUE(fresh.propagate().isOk());
     EXPECT_EQ(reused.distance(), fresh.distance());
-    EXPECT_EQ(reused.label(), fresh.label());
+    EXPECT_EQ(reused.cell(), fresh.cell());
     EXPECT_EQ(reused.acceptedOrder(), fresh.acceptedOrder());
   }
   // The one-shot function gives the same field too.

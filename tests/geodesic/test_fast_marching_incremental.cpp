@@ -56,7 +56,7 @@ TEST_P(Incremental, EqualsMultiSourceRunAndVisitsOnlyImprovedVertices) {
     worst = std::max(worst, diff);
     if (diff > 1e-12 * (1.0 + oneShot->distance[v])) ++differ;
     if (diff == 0.0) {
-      EXPECT_EQ(marcher.label()[v], oneShot->nearestSource[v]) << "vertex " << v;
+      EXPECT_EQ(marcher.cell()[v], oneShot->cell[v]) << "vertex " << v;
     }
   }
   std::printf("%s: 59 incremental steps visited %ld vertices (%.2f x V); %d of %d differ from the one-shot run "

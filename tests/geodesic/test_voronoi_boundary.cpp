@@ -39,14 +39,14 @@ void expectWellFormed(const TriMesh& m, const FastMarchingResult& r, const std::
   for (const Tri& t : m.triangles)
     for (int k = 0; k < 3; ++k) {
       const int a = t[k], b = t[(k + 1) % 3];
-      if (r.nearestSource[a] != r.nearestSource[b]) expected.insert(std::minmax(a, b));
+      if (r.cell[a] != r.cell[b]) expected.insert(std::minmax(a, b));
     }
   for (const VoronoiEdgePoint& p : points) {
     EXPECT_TRUE(got.insert(std::minmax(p.v1, p.v2)).second) << "edge reported twice";
     EXPECT_GE(p.lambda, 0.0);
     EXPECT_LE(p.lambda, 1.0);
-    EXPECT_EQ(p.label1, r.nearestSource[p.v1]);
-    EXPECT_EQ(p.label2, r.nearestSource[p.v2]);
+    EXPECT_EQ(p.label1, r.cell[p.v1]);
+    EXPECT_EQ(p.label2, r.cell[p.v2]);
   }
   EXPECT_EQ(got, expected);
 }
@@ -58,7 +58,7 @@ TEST(VoronoiBoundary, AntipodalSourcesOnASphereMeetOnTheEquator) {
     ASSERT_NEAR((m.positions[3] + north).norm(), 0.0, 1e-12);
     const auto r = fastMarching(m, Metric::uniform(), {0, 3});
     ASSERT_TRUE(r);
-    const auto points = voronoiBoundaryPoints(m, Metric::uniform(), r->distance, r->nearestSource);
+    const auto points = voronoiBoundaryPoints(m, Metric::uniform(), r->distance, r->cell);
     expectWellFormed(m, *r, points);
     const double h = m.meanEdgeLength();
     const Offsets o = offsetsFromPlane(m, points, north.normalized(), 0.0);
@@ -76,7 +76,7 @@ TEST(VoronoiBoundary, TwoSourcesOnAPlaneMeetOnTheBisector) {
   const int a = 20 * 61 + 15, b = 40 * 61 + 44;  // two interior vertices
   const auto r = fastMarching(m, Metric::uniform(), {a, b});
   ASSERT_TRUE(r);
-  const auto points = voronoiBoundaryPoints(m, Metric::uniform(), r->distance, r->nearestSource);
+  const auto points = voronoiBoundaryPoints(m, Metric::uniform(), r->distance, r->cell);
   expectWellFormed(m, *r, points);
   const Vec3 pa = m.positions[a], pb = m.positions[b];
   const Vec3 n = (pb - pa).normalized();

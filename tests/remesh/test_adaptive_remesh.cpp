@@ -62,7 +62,7 @@ Expected<DelaunayResult> remesh(const TriMesh& m, const Metric& metric, int targ
   fps.targetCount = target;
   Expected<FpsResult> s = farthestPointSampling(marcher, fps);
   if (!s) return s.status();
-  return geodesicDelaunay(marcher, std::move(s->points));
+  return geodesicDelaunay(marcher, std::move(s->origin));
 }
 
 /// The adaptive result with the largest final vertex count not above `maxCount`: start from the

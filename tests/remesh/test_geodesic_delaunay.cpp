@@ -31,7 +31,7 @@ TEST_P(DelaunayOnClosedMeshes, ManifoldOrientedSameTopology) {
   FastMarcher marcher(m, Metric::uniform());
   const auto samples = farthestPointSampling(marcher, fps);
   ASSERT_TRUE(samples);
-  const auto r = geodesicDelaunay(marcher, samples->points);
+  const auto r = geodesicDelaunay(marcher, samples->origin);
   ASSERT_TRUE(r) << r.status().message;
   const Recount out = recount(r->mesh.triangles, r->mesh.vertexCount());
   std::printf("%-14s %2.0f%%: %d samples + %d added in %d rounds -> %d vertices, %d faces; components %d/%d, genus %d/%d\n",
@@ -75,7 +75,7 @@ TEST_P(DelaunayWithBoundaries, BoundaryLoopsKept) {
   FastMarcher marcher(m, Metric::uniform());
   const auto samples = farthestPointSampling(marcher, fps);
   ASSERT_TRUE(samples);
-  const auto r = geodesicDelaunay(marcher, samples->points);
+  const auto r = geodesicDelaunay(marcher, samples->origin);
   ASSERT_TRUE(r) << r.status().message;
   const Recount out = recount(r->mesh.triangles, r->mesh.vertexCount());
   std::printf("%-22s %2.0f%%: %d samples + %d added in %d rounds; loops %d/%d, components %d/%d, genus %d/%d\n",

@@ -41,7 +41,7 @@ TEST_P(RemeshQuality, WellShapedTrianglesAtDefaultSettings) {
   EXPECT_EQ(out.genusSum, in.genusSum);
   EXPECT_EQ(out.boundaryLoops, in.boundaryLoops);
   for (int v = 0; v < r.mesh.vertexCount(); ++v)
-    ASSERT_LT((r.samplePoint[v].position(input) - r.mesh.positions[v]).norm(), 1e-9 * input.boundingBoxDiagonal());
+    ASSERT_LT((r.origin[v].position(input) - r.mesh.positions[v]).norm(), 1e-9 * input.boundingBoxDiagonal());
   const test::AngleRecount angles = test::recountAngles(r.mesh);
   const double smallest = angles.smallestDegrees, share = angles.shareBelow30;
   std::printf("%s %.0f%%: %d vertices (%d added), %d relaxation moves, smallest angle %.1f deg, %.2f %% of "
@@ -74,7 +74,7 @@ TEST(RemeshQualityBadTriangles, NeedlesAndZeroAreaFaces) {
     EXPECT_EQ(rc.genusSum, in.genusSum);
     for (int v = 0; v < out.vertexCount(); ++v) {
       ASSERT_TRUE(out.positions[v].allFinite());
-      ASSERT_LT((remeshed->mesh.samplePoint[v].position(input) - out.positions[v]).norm(), 1e-9);
+      ASSERT_LT((remeshed->mesh.origin[v].position(input) - out.positions[v]).norm(), 1e-9);
     }
     const test::AngleRecount angles = test::recountAngles(out);
     std::printf("%s with %d zero-area faces, 10%%: %d vertices, smallest angle %.1f deg, %.2f %% under 30 deg\n", name,

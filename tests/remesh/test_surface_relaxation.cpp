@@ -30,7 +30,7 @@ DelaunayResult triangulate(const TriMesh& input, int count) {
   fps.targetCount = count;
   const Expected<FpsResult> samples = farthestPointSampling(marcher, fps);
   EXPECT_TRUE(samples);
-  Expected<DelaunayResult> r = geodesicDelaunay(marcher, samples->points);
+  Expected<DelaunayResult> r = geodesicDelaunay(marcher, samples->origin);
   EXPECT_TRUE(r) << r.status().message;
   return std::move(*r);
 }
@@ -49,7 +49,7 @@ TEST(SurfaceRelaxation, PlaneStaysPlanarKeepsBoundaryAndRaisesTheSmallestAngle) 
   const TriMesh input = test::planeGrid(60, 1.0, 0.3, 7);
   const DelaunayResult d = triangulate(input, 300);
   TriMesh out = d.mesh;
-  std::vector<SurfacePoint> points = d.samplePoint;
+  std::vector<SurfacePoint> points = d.origin;
   const Expected<RelaxationResult> r = relaxOnSurface(out, points, input);
   ASSERT_TRUE(r) << r.status().message;
   EXPECT_EQ(r->iterations, 3);
@@ -82,7 +82,7 @@ TEST(SurfaceRelaxation, SphereVerticesStayOnTheInputSurface) {
   const TriMesh input = test::icosphere(5);  // 10,242 vertices
   const DelaunayResult d = triangulate(input, 1500);
   TriMesh out = d.mesh;
-  std::vector<SurfacePoint> points = d.samplePoint;
+  std::vector<SurfacePoint> points = d.origin;
   const Expected<RelaxationResult> r = relaxOnSurface(out, points, input);
   ASSERT_TRUE(r);
   EXPECT_EQ(r->fixedVertices, 0);  // closed and smooth: every vertex may move
@@ -106,7 +106,7 @@ TEST(SurfaceRelaxation, CreaseAndCornerVerticesDoNotMove) {
   // input's face normals.
   std::vector<int> onCrease;
   for (int v = 0; v < d.mesh.vertexCount(); ++v) {
-    const int iv = d.samplePoint[v].vertex;
+    const int iv = d.origin[v].vertex;
     if (iv < 0) continue;
     bool sharp = false;
     for (const int* c = input.cornersBegin(iv); c != input.cornersEnd(iv); ++c) {
@@ -121,7 +121,7 @@ TEST(SurfaceRelaxation, CreaseAndCornerVerticesDoNotMove) {
   }
   ASSERT_GT(onCrease.size(), 30u);
   TriMesh out = d.mesh;
-  std::vector<SurfacePoint> points = d.samplePoint;
+  std::vector<SurfacePoint> points = d.origin;
   const Expected<RelaxationResult> r = relaxOnSurface(out, points, input);
   ASSERT_TRUE(r);
   EXPECT_EQ(r->fixedVertices, static_cast<int>(onCrease.size()));
@@ -141,7 +141,7 @@ TEST(SurfaceRelaxation, ZeroIterationsChangeNothing) {
   const TriMesh input = test::planeGrid(30, 1.0, 0.3, 3);
   const DelaunayResult d = triangulate(input, 80);
   TriMesh out = d.mesh;
-  std::vector<SurfacePoint> points = d.samplePoint;
+  std::vector<SurfacePoint> points = d.origin;
   RelaxationParams params;
   params.iterations = 0;
   const Expected<RelaxationResult> r = relaxOnSurface(out, points, input, params);
@@ -155,14 +155,14 @@ TEST(SurfaceRelaxation, BadInputIsReportedAndChangesNothing) {
   const TriMesh input = test::planeGrid(30, 1.0, 0.3, 3);
   const DelaunayResult d = triangulate(input, 80);
   TriMesh out = d.mesh;
-  std::vector<SurfacePoint> points = d.samplePoint;
+  std::vector<SurfacePoint> points = d.origin;
   points.pop_back();  // one point short
   Expected<RelaxationResult> r = relaxOnSurface(out, points, input);
   ASSERT_FALSE(r);
   EXPECT_EQ(r.status().code, StatusCode::InvalidInput);
   EXPECT_EQ(out.positions, d.mesh.positions);
 
-  points = d.samplePoint;
+  points = d.origin;
   points[5] = SurfacePoint::inFace(input.faceCount(), Vec3(1, 0, 0));  // a face out of range
   r = relaxOnSurface(out, points, input);
   ASSERT_FALSE(r);

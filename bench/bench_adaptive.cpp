@@ -2,16 +2,16 @@
 // uniform remeshing, CGAL's isotropic remeshing and MeshLab's quadric edge collapse, same meshes,
 // same output vertex count.
 //
-//   Uniform/<mesh>/<pct>   FastMarcher(mesh, Metric::uniform()) + farthestPointSampling +
-//                          geodesicDelaunay on one engine (the uniform filter's pipeline), target =
-//                          <pct> of the input's vertices. Its final vertex count N (samples + repair)
-//                          is the count every other method is matched to.
-//   Adaptive/<mesh>/<pct>  totalCurvature (radius 2 mean edge lengths) + speedFromField (Attractive,
-//                          strength 16) + the same pipeline under P = 1/F. Target calibrated untimed
-//                          so that the final count is <= N and within 1% of it (the repair adds more
-//                          samples under a non-uniform metric): start at N, lower by each run's excess.
-//                          Counters curvature_ms, speed_ms, engine_ms, sampling_ms, delaunay_ms: each
-//                          stage's thread CPU time; the time column is their total.
+//   Uniform/<mesh>/<pct>   gr::remeshSurface with the adaptive preset (no relaxation) and a uniform
+//                          metric, target = <pct> of the input's vertices. Its final vertex count N
+//                          (samples + repair) is the count every other method is matched to.
+//   Adaptive/<mesh>/<pct>  gr::remeshAdaptive, what the adaptive filter runs: total curvature (radius
+//                          2 mean edge lengths), Attractive speed (strength 16), then the same remesh
+//                          under P = 1/F. Target calibrated untimed so that the final count is <= N
+//                          and within 1% of it (the repair adds more samples under a non-uniform
+//                          metric): start at N, lower by each run's excess. Counters metric_ms,
+//                          prepare_ms, engine_ms, sampling_ms, delaunay_ms: each stage's wall time
+//                          (RemeshStageTimes; metric_ms = the call's wall time minus the others).
 //   Cgal/<mesh>/<pct>      CGAL 5.5 isotropic_remeshing (3 iterations, protect_constraints(false)) on a
 //                          Surface_mesh<Epick> copy (copy untimed), target edge length calibrated untimed
 //                          to N vertices as in bench_remesh (up to 3 runs, within 1%).
@@ -46,20 +46,14 @@
 #include <vector>
 
 #include "bench/bench_support.h"
-#include "core/field/curvature.h"
 #include "core/measure/evaluation.h"
-#include "core/geodesic/farthest_point_sampling.h"
-#include "core/geodesic/fast_marching.h"
-#include "core/remesh/geodesic_delaunay.h"
-#include "core/geodesic/metric.h"
-#include "core/field/speed_field.h"
+#include "core/remesh/remesh_surface.h"
 #include "core/mesh/tri_mesh.h"
 #include "core/mesh/vcg_mesh.h"
 
 namespace {
 
 using gr::bench::SurfaceMesh;
-using gr::bench::cpuSeconds;
 
 constexpr double kStrength = 16.0;      ///< mu of the Attractive mapping
 constexpr double kRadiusInEdges = 2.0;  ///< curvature ball radius, in mean edge lengths
@@ -132,11 +126,11 @@ void setQualityCounters(benchmark::State& state, const BenchMesh& bm, const gr::
 // Ours: uniform and adaptive
 
 struct Stages {
-  double curvature = 0, speed = 0, engine = 0, sampling = 0, delaunay = 0;
-  double total() const { return curvature + speed + engine + sampling + delaunay; }
+  double metric = 0, prepare = 0, engine = 0, sampling = 0, delaunay = 0;
+  double total() const { return metric + prepare + engine + sampling + delaunay; }
   void operator+=(const Stages& o) {
-    curvature += o.curvature;
-    speed += o.speed;
+    metric += o.metric;
+    prepare += o.prepare;
     engine += o.engine;
     sampling += o.sampling;
     delaunay += o.delaunay;
@@ -144,51 +138,52 @@ struct Stages {
 };
 
 struct Run {
-  gr::DelaunayResult result;
+  gr::SurfaceRemeshResult result;
   Stages seconds;
 };
 
-/// Sampling + triangulation on a fresh engine under `metric`; the error status on failure.
+gr::SurfaceRemeshParams remeshParams(int target) {
+  gr::SurfaceRemeshParams params = gr::SurfaceRemeshParams::adaptive();  // no relaxation, for both
+  params.sampling.targetCount = target;
+  params.measure = false;
+  return params;
+}
+
+Stages stagesOf(const gr::SurfaceRemeshResult& r) {
+  Stages s;
+  s.prepare = r.times.prepare;
+  s.engine = r.times.engine;
+  s.sampling = r.times.sampling;
+  s.delaunay = r.times.triangulation;
+  return s;
+}
+
+/// gr::remeshSurface under `metric` with the adaptive preset; the error status on failure.
 gr::Expected<Run> remesh(const gr::TriMesh& mesh, const gr::Metric& metric, int target) {
-  Run run;
-  gr::FpsParams fps;
-  fps.targetCount = target;
-  const double t0 = cpuSeconds();
-  gr::FastMarcher marcher(mesh, metric);
-  const double t1 = cpuSeconds();
-  gr::Expected<gr::FpsResult> s = gr::farthestPointSampling(marcher, fps);
-  const double t2 = cpuSeconds();
-  if (!s) return gr::Status{s.status().code, "sampling: " + s.status().message};
-  gr::Expected<gr::DelaunayResult> d = gr::geodesicDelaunay(marcher, std::move(s->origin));
-  const double t3 = cpuSeconds();
-  if (!d) return gr::Status{d.status().code, "triangulation: " + d.status().message};
-  run.result = std::move(*d);
-  run.seconds.engine = t1 - t0;
-  run.seconds.sampling = t2 - t1;
-  run.seconds.delaunay = t3 - t2;
+  gr::Expected<gr::SurfaceRemeshResult> r = gr::remeshSurface(mesh, metric, remeshParams(target));
+  if (!r) return r.status();
+  Run run{std::move(*r), {}};
+  run.seconds = stagesOf(run.result);
   return run;
 }
 
-/// Curvature + speed + the pipeline: what the adaptive filter computes.
+/// gr::remeshAdaptive, what the adaptive filter runs: curvature, speed, metric, then the remesh.
 gr::Expected<Run> remeshAdaptive(const gr::TriMesh& mesh, int target, gr::Metric* metricOut = nullptr,
                                   double radiusInEdges = kRadiusInEdges) {
-  const double t0 = cpuSeconds();
-  gr::CurvatureParams cp;
-  cp.radius = radiusInEdges * mesh.meanEdgeLength();
-  gr::Expected<gr::CurvatureResult> tau = gr::totalCurvature(mesh, cp);
-  const double t1 = cpuSeconds();
-  if (!tau) return gr::Status{tau.status().code, "curvature: " + tau.status().message};
-  gr::SpeedFieldParams sp;
-  sp.mapping = gr::SpeedMapping::Attractive;
-  sp.strength = kStrength;
-  gr::Expected<gr::SpeedFieldResult> speed = gr::speedFromField(mesh, tau->tau, sp);
-  const double t2 = cpuSeconds();
-  if (!speed) return gr::Status{speed.status().code, "speed: " + speed.status().message};
-  gr::Expected<Run> run = remesh(mesh, speed->metric, target);
-  if (!run) return run;
-  run->seconds.curvature = t1 - t0;
-  run->seconds.speed = t2 - t1;
-  if (metricOut) *metricOut = speed->metric;
+  gr::AdaptiveRemeshParams params;
+  params.metric.field = gr::AdaptiveField::TotalCurvature;
+  params.metric.curvature.radius = radiusInEdges * mesh.meanEdgeLength();
+  params.metric.speed.mapping = gr::SpeedMapping::Attractive;
+  params.metric.speed.strength = kStrength;
+  params.remesh = remeshParams(target);
+  const auto t0 = std::chrono::steady_clock::now();
+  gr::Expected<gr::AdaptiveRemeshResult> r = gr::remeshAdaptive(mesh, {}, params);
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!r) return r.status();
+  Run run{std::move(r->remesh), {}};
+  run.seconds = stagesOf(run.result);
+  run.seconds.metric = total - run.seconds.total();
+  if (metricOut) *metricOut = r->metric.speed.metric;
   return run;
 }
 
@@ -213,8 +208,8 @@ std::optional<int> uniformCount(benchmark::State& state, const Case& c, BenchMes
 
 void setStageCounters(benchmark::State& state, const Stages& sum) {
   const auto perRun = [](double s) { return benchmark::Counter(1e3 * s, benchmark::Counter::kAvgIterations); };
-  state.counters["curvature_ms"] = perRun(sum.curvature);
-  state.counters["speed_ms"] = perRun(sum.speed);
+  state.counters["metric_ms"] = perRun(sum.metric);
+  state.counters["prepare_ms"] = perRun(sum.prepare);
   state.counters["engine_ms"] = perRun(sum.engine);
   state.counters["sampling_ms"] = perRun(sum.sampling);
   state.counters["delaunay_ms"] = perRun(sum.delaunay);

@@ -1,11 +1,10 @@
 // Uniform remeshing: ours (farthest-point sampling + geodesic Delaunay, paper §3) against CGAL's
 // isotropic remeshing, same process, same meshes, same output vertex count.
 //
-//   Ours/<mesh>/<target>  FastMarcher construction + farthestPointSampling + geodesicDelaunay +
-//                         relaxOnSurface (3 rounds) on one engine: the stages of gr::remesh
-//                         (core/remesh/remesh.h), as the uniform filter runs them at its defaults.
-//                         Counters engine_ms, sampling_ms, delaunay_ms, relax_ms: each stage's
-//                         thread CPU time.
+//   Ours/<mesh>/<target>  gr::remeshSurface (core/remesh/remesh_surface.h) at the uniform filter's
+//                         defaults, what the filter runs, without the measures of its log (angles,
+//                         Hausdorff: no competitor computes them). Counters engine_ms, sampling_ms,
+//                         delaunay_ms, relax_ms: each stage's wall time (RemeshStageTimes).
 //   OursNoRelax/...       the same without the relaxation (the paper's triangulation alone).
 //   OursSubVertex/...     the same as Ours with FpsParams::subVertexPlacement.
 //   MeshLabIsotropic/...  MeshLab 2020.09's "Remeshing: Isotropic Explicit Remeshing" through the
@@ -53,18 +52,13 @@
 
 #include "bench/bench_support.h"
 #include "core/measure/evaluation.h"
-#include "core/geodesic/farthest_point_sampling.h"
-#include "core/geodesic/fast_marching.h"
-#include "core/remesh/geodesic_delaunay.h"
-#include "core/remesh/surface_relaxation.h"
-#include "core/geodesic/metric.h"
+#include "core/remesh/remesh_surface.h"
 #include "core/mesh/tri_mesh.h"
 #include "core/mesh/vcg_mesh.h"
 
 namespace {
 
 using gr::bench::SurfaceMesh;
-using gr::bench::cpuSeconds;
 
 constexpr int kCgalIterations = 3;   ///< isotropic_remeshing's number_of_iterations
 constexpr int kCalibrationRuns = 3;  ///< untimed CGAL runs to match the vertex count
@@ -130,52 +124,26 @@ int targetCount(const Case& c, const BenchMesh& bm) {
 // ------------------------------------------------------------------------------------------------
 // Ours
 
-struct OursRun {
-  gr::DelaunayResult result;
-  double engineSeconds = 0, samplingSeconds = 0, delaunaySeconds = 0, relaxSeconds = 0;
-};
-
 struct Variant {
   bool subVertex = false;  ///< FpsParams::subVertexPlacement
-  int relaxation = 3;      ///< RelaxationParams::iterations (the filter's default)
+  int relaxation = gr::SurfaceRemeshParams().relaxation.iterations;  ///< the filter's default
 };
 
-/// The filter's pipeline on a fresh engine; nullopt after SkipWithError.
-std::optional<OursRun> runOurs(benchmark::State& state, const BenchMesh& bm, int target, const Variant& variant) {
-  const gr::Metric metric = gr::Metric::uniform();
-  gr::FpsParams params;
-  params.targetCount = target;
-  params.subVertexPlacement = variant.subVertex;
-  OursRun run;
-  const double t0 = cpuSeconds();
-  gr::FastMarcher marcher(bm.tri, metric);
-  const double t1 = cpuSeconds();
-  gr::Expected<gr::FpsResult> s = gr::farthestPointSampling(marcher, params);
-  const double t2 = cpuSeconds();
-  if (!s) {
-    state.SkipWithError(("sampling: " + s.status().message).c_str());
-    return std::nullopt;
-  }
-  gr::Expected<gr::DelaunayResult> d = gr::geodesicDelaunay(marcher, std::move(s->origin));
-  const double t3 = cpuSeconds();
-  if (!d) {
-    state.SkipWithError(("triangulation: " + d.status().message).c_str());
-    return std::nullopt;
-  }
-  gr::RelaxationParams relax;
-  relax.iterations = variant.relaxation;
-  gr::Expected<gr::RelaxationResult> r = gr::relaxOnSurface(d->mesh, d->origin, bm.tri, relax);
-  const double t4 = cpuSeconds();
+/// gr::remeshSurface, what the uniform filter runs, without the log's measures (which no competitor
+/// computes); nullopt after SkipWithError.
+std::optional<gr::SurfaceRemeshResult> runOurs(benchmark::State& state, const BenchMesh& bm, int target,
+                                               const Variant& variant) {
+  gr::SurfaceRemeshParams params;
+  params.sampling.targetCount = target;
+  params.sampling.subVertexPlacement = variant.subVertex;
+  params.relaxation.iterations = variant.relaxation;
+  params.measure = false;
+  gr::Expected<gr::SurfaceRemeshResult> r = gr::remeshSurface(bm.tri, params);
   if (!r) {
-    state.SkipWithError(("relaxation: " + r.status().message).c_str());
+    state.SkipWithError(("remeshSurface: " + r.status().message).c_str());
     return std::nullopt;
   }
-  run.result = std::move(*d);
-  run.engineSeconds = t1 - t0;
-  run.samplingSeconds = t2 - t1;
-  run.delaunaySeconds = t3 - t2;
-  run.relaxSeconds = t4 - t3;
-  return run;
+  return std::move(*r);
 }
 
 /// Our output vertex count per case: the count CGAL is calibrated to.
@@ -209,23 +177,23 @@ void runOursCase(benchmark::State& state, const Case& c, const Variant& variant)
   if (!bm) return;
   const int target = targetCount(c, *bm);
   double engine = 0, sampling = 0, delaunay = 0, relax = 0;
-  std::optional<OursRun> run;
+  std::optional<gr::SurfaceRemeshResult> run;
   for (auto _ : state) {
     run = runOurs(state, *bm, target, variant);
     if (!run) return;
-    engine += run->engineSeconds;
-    sampling += run->samplingSeconds;
-    delaunay += run->delaunaySeconds;
-    relax += run->relaxSeconds;
+    engine += run->times.engine;
+    sampling += run->times.sampling;
+    delaunay += run->times.triangulation;
+    relax += run->times.relaxation;
   }
   const auto perRun = [](double s) { return benchmark::Counter(1e3 * s, benchmark::Counter::kAvgIterations); };
   state.counters["engine_ms"] = perRun(engine);
   state.counters["sampling_ms"] = perRun(sampling);
   state.counters["delaunay_ms"] = perRun(delaunay);
   state.counters["relax_ms"] = perRun(relax);
-  state.counters["added"] = run->result.addedSamples;
-  state.counters["repair_rounds"] = run->result.repairRounds;
-  setQualityCounters(state, *bm, run->result.mesh, target);
+  state.counters["added"] = run->addedSamples;
+  state.counters["repair_rounds"] = run->repairRounds;
+  setQualityCounters(state, *bm, run->mesh, target);
 }
 
 void BM_Ours(benchmark::State& state, const Case& c) {
@@ -235,16 +203,16 @@ void BM_Ours(benchmark::State& state, const Case& c) {
 /// The paper's triangulation alone (the filter's Relaxation = 0).
 void BM_OursNoRelax(benchmark::State& state, const Case& c) { runOursCase(state, c, Variant{false, 0}); }
 /// With FpsParams::subVertexPlacement (the filter's SubVertexPlacement option).
-void BM_OursSubVertex(benchmark::State& state, const Case& c) { runOursCase(state, c, Variant{true, 3}); }
+void BM_OursSubVertex(benchmark::State& state, const Case& c) { runOursCase(state, c, Variant{true}); }
 
 /// The vertex count the competitors are matched to: ours (filter defaults), run untimed if its
 /// benchmark was filtered out; nullopt after SkipWithError.
 std::optional<int> vertexCountToMatch(benchmark::State& state, const BenchMesh& bm, const Case& c) {
   auto found = oursVertexCount().find(c.key());
   if (found == oursVertexCount().end()) {
-    std::optional<OursRun> run = runOurs(state, bm, targetCount(c, bm), Variant{});
+    std::optional<gr::SurfaceRemeshResult> run = runOurs(state, bm, targetCount(c, bm), Variant{});
     if (!run) return std::nullopt;
-    found = oursVertexCount().emplace(c.key(), run->result.mesh.vertexCount()).first;
+    found = oursVertexCount().emplace(c.key(), run->mesh.vertexCount()).first;
   }
   return found->second;
 }

@@ -12,15 +12,13 @@
 namespace gr::filters {
 namespace {
 
-/// The metric asked for by the parameters: P = 1, or P = 1 / quality.
-Expected<Metric> metricFromParameters(const MeshModel& mm, const adapters::CoreView& view, bool useQuality) {
-  if (!useQuality) return Metric::uniform();
+/// The front speed asked for by the parameters: the vertex quality, or none (F = 1).
+Expected<std::vector<double>> speedFromParameters(const MeshModel& mm, const adapters::CoreView& view, bool useQuality) {
+  if (!useQuality) return std::vector<double>();
   if (!mm.hasDataMask(MeshModel::MM_VERTQUALITY))
     return invalidInput("UseQualityAsSpeed is on, but the mesh has no per-vertex quality: compute one first "
                         "(any filter of the Quality Measure and Computations menu)");
-  Expected<Metric> metric = Metric::fromSpeed(view.mesh, adapters::vertexQuality(mm.cm, view));
-  if (!metric) return invalidInput("vertex quality used as speed: " + metric.status().message);
-  return metric;
+  return adapters::vertexQuality(mm.cm, view);
 }
 
 }  // namespace
@@ -58,19 +56,21 @@ Status applyFastMarching(MeshDocument& doc, const RichParameterList& params, Fil
     return invalidInput("no vertex is selected: select the source vertices first (for example with "
                         "'Conditional Vertex Selection')");
   const bool useQuality = params.getBool(param::kUseQualityAsSpeed);
-  Expected<Metric> metric = metricFromParameters(*mm, view, useQuality);
-  if (!metric) return metric.status();
+  Expected<std::vector<double>> speed = speedFromParameters(*mm, view, useQuality);
+  if (!speed) return speed.status();
   const double maxDistance = params.getAbsPerc(param::kMaxDistance);
-  if (!std::isfinite(maxDistance) || maxDistance < 0.0)
-    return invalidInput("MaxDistance must be >= 0 (0 = no limit), got " + formatNumber(maxDistance));
   FastMarchingParams fmParams;
-  if (maxDistance > 0.0) fmParams.maxDistance = maxDistance;
+  if (maxDistance != 0.0) fmParams.maxDistance = maxDistance;  // 0 = no limit; the core checks the rest
   const int colorBy = params.getEnum(param::kColorBy);
   if (colorBy != int(ColorBy::Distance) && colorBy != int(ColorBy::VoronoiRegion))
     return invalidInput("ColorBy must be 0 (Distance) or 1 (Voronoi region), got " + std::to_string(colorBy));
 
-  Expected<FastMarchingResult> result = fastMarching(view.mesh, *metric, sources, fmParams, ctx.progress);
-  if (!result) return result.status();
+  Expected<FastMarchingResult> result = fastMarchingWithSpeed(view.mesh, *speed, sources, fmParams, ctx.progress);
+  if (!result) {
+    if (useQuality && result.status().code == StatusCode::InvalidInput)
+      return invalidInput("vertex quality used as speed: " + result.status().message);
+    return result.status();
+  }
 
   // ...then commit.
   adapters::writeVertexQuality(m, view, result->distance, -1.0);

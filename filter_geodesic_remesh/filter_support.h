@@ -1,11 +1,12 @@
-// Small pieces every filter uses: the current mesh as the core sees it, and number formatting
-// for the log.
+// Small pieces every filter uses: the current mesh as the core sees it (and, through
+// core/base/format.h, number formatting for the log).
 #pragma once
 
 #include <common/interfaces.h>
 
 #include <string>
 
+#include "core/base/format.h"
 #include "core/base/status.h"
 #include "vcg_adapters/cmesho_adapter.h"
 
@@ -17,10 +18,5 @@ struct CurrentMesh {
   adapters::CoreView view;
 };
 Expected<CurrentMesh> currentMesh(MeshDocument& doc);
-
-/// printf-style formatting of one number, for log lines.
-std::string formatNumber(double x, const char* spec = "%.6g");
-/// A duration for the log: "87.7 ms" under ten seconds, "23.5 s" from there on.
-std::string formatDuration(double milliseconds);
 
 }  // namespace gr::filters

@@ -73,7 +73,7 @@ for (family, mesh, target), rows in sorted(runs.items(), key=lambda kv: row_key(
         continue
     u = runs.get(("Uniform", mesh, target), [{}])[0]
     ours = family in ("Uniform", "Adaptive", "AdaptiveDefaultRadius")
-    curv = t(med(rows, "curvature_ms") + med(rows, "speed_ms")) if family.startswith("Adaptive") else ""
+    curv = t(med(rows, "metric_ms")) if family.startswith("Adaptive") else ""
     hu = f"{r['hausdorff2_pct'] / u['hausdorff2_pct']:.2f}" if "hausdorff2_pct" in u else ""
     ru = f"{r['rms2_pct'] / u['rms2_pct']:.2f}" if "rms2_pct" in u else ""
     print(f"| {mesh} | {target} | {labels.get(family, family)} | {int(r['vertices']):,} | {t(ms(rows, family))} "

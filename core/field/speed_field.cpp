@@ -2,26 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
+
+#include "core/base/format.h"
+#include "core/base/statistics.h"
 
 namespace gr {
 namespace {
 
-std::string num(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
-
-/// Nearest-rank percentile: the smallest value such that at least p% of the values are <= it.
-double percentileOf(std::vector<double> values, double p) {
-  const double n = static_cast<double>(values.size());
-  size_t rank = static_cast<size_t>(std::ceil(p * n / 100.0));  // p * n first: exact for integer p
-  rank = std::clamp<size_t>(rank, 1, values.size());
-  std::nth_element(values.begin(), values.begin() + (rank - 1), values.end());
-  return values[rank - 1];
-}
+std::string num(double x) { return formatNumber(x, "%.6g"); }
 
 }  // namespace
 
@@ -76,7 +65,7 @@ Expected<SpeedFieldResult> speedFromField(const TriMesh& mesh, const std::vector
   std::vector<double> values(field);
   if (direct)
     for (double& q : values) q -= r.fieldMin;
-  r.scale = percentileOf(values, params.percentile);
+  r.scale = percentile(values, params.percentile);
   if (!(r.scale > 0.0)) {
     const double largest = *std::max_element(values.begin(), values.end());
     const auto atZero = std::count(values.begin(), values.end(), 0.0);

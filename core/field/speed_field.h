@@ -42,6 +42,7 @@ enum class SpeedMapping {
   Repulsive,   ///< F = 1 + eps q/s (paper's F1): sparser where q is large
 };
 
+constexpr int kSpeedMappingCount = 3;
 /// Name of a mapping, for logs ("Attractive").
 const char* toString(SpeedMapping mapping);
 

@@ -416,4 +416,13 @@ Expected<FastMarchingResult> fastMarching(const TriMesh& mesh, const Metric& met
   return r;
 }
 
+Expected<FastMarchingResult> fastMarchingWithSpeed(const TriMesh& mesh, const std::vector<double>& speed,
+                                                   const std::vector<int>& sources, const FastMarchingParams& params,
+                                                   Progress progress) {
+  if (speed.empty()) return fastMarching(mesh, Metric::uniform(), sources, params, std::move(progress));
+  Expected<Metric> metric = Metric::fromSpeed(mesh, speed);
+  if (!metric) return metric.status();
+  return fastMarching(mesh, *metric, sources, params, std::move(progress));
+}
+
 }  // namespace gr

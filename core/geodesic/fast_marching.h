@@ -145,4 +145,10 @@ Expected<FastMarchingResult> fastMarching(const TriMesh& mesh, const Metric& met
                                           const std::vector<int>& sources,
                                           const FastMarchingParams& params = {}, Progress progress = {});
 
+/// The same with a per-vertex front speed F (P = 1/F, Metric::fromSpeed); an empty `speed` is
+/// F = 1. Fails also (InvalidInput) when a speed is not finite and > 0, naming the vertex.
+Expected<FastMarchingResult> fastMarchingWithSpeed(const TriMesh& mesh, const std::vector<double>& speed,
+                                                   const std::vector<int>& sources,
+                                                   const FastMarchingParams& params = {}, Progress progress = {});
+
 }  // namespace gr

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/base/status.h"
+#include "core/mesh/surface_point.h"
 #include "core/mesh/tri_mesh.h"
 
 namespace gr {
@@ -24,5 +25,11 @@ struct Metric {
   /// P given directly. Same checks as fromSpeed.
   static Expected<Metric> fromCost(const TriMesh& mesh, std::vector<double> cost);
 };
+
+/// The metric of `from` at the points `at` of `from` (e.g. the vertices of a subdivision, by their
+/// origin): P interpolated barycentrically, one value per point. A uniform metric stays uniform.
+/// Fails (InvalidInput) if the metric does not have one P per vertex of `from`, or a point is out
+/// of range.
+Expected<Metric> transferMetric(const Metric& metric, const TriMesh& from, const std::vector<SurfacePoint>& at);
 
 }  // namespace gr

@@ -19,6 +19,7 @@
 
 #include "core/geodesic/fast_marching.h"
 #include "core/mesh/vcg_mesh.h"
+#include "core/remesh/remesh_surface.h"
 #include "vcg_adapters/cmesho_adapter.h"
 #include "filter_geodesic_remesh/filter_geodesic_remesh.h"
 #include "filter_geodesic_remesh/parameter_names.h"
@@ -104,13 +105,16 @@ class FilterInProcess : public ::testing::Test {
     for (const auto& entry : log.logStringList()) all += entry.second.toStdString() + "\n";
     return all;
   }
-  /// Applies the filter to a bad mesh and checks: false, a message in the log, mesh untouched.
-  void expectCleanFailure(MeshModel& mm, const std::string& expectedMessage) {
+  /// Applies the filter to a bad mesh and checks: false, the status code in the log ("<filter>
+  /// failed (<code>): <message>"), an error message that names the culprit (`names`), the mesh
+  /// untouched.
+  void expectCleanFailure(MeshModel& mm, StatusCode code, const std::string& names) {
     const Snapshot before(mm);
     EXPECT_FALSE(apply());
-    EXPECT_NE(plugin.errorMsg().toStdString().find(expectedMessage), std::string::npos)
-        << "errorMessage: " << plugin.errorMsg().toStdString();
-    EXPECT_NE(logText().find(expectedMessage), std::string::npos) << "log:\n" << logText();
+    const std::string failed = std::string("failed (") + toString(code) + "): ";
+    const std::string error = plugin.errorMsg().toStdString();
+    EXPECT_NE(error.find(names), std::string::npos) << "errorMessage: " << error;
+    EXPECT_NE(logText().find(failed), std::string::npos) << "log:\n" << logText();
     EXPECT_TRUE(Snapshot(mm) == before) << "a failed filter changed the mesh";
   }
 };
@@ -170,20 +174,20 @@ TEST_F(FilterInProcess, NoSelection) {
   const TriMesh grid = test::planeGrid(4);
   MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
   declare(*mm);
-  expectCleanFailure(*mm, "no vertex is selected");
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "no vertex is selected");
 }
 
 TEST_F(FilterInProcess, PointCloud) {
   MeshModel* mm = addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {});
   mm->cm.vert[0].SetS();
   declare(*mm);
-  expectCleanFailure(*mm, "the mesh has no faces");
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "the mesh has no faces");
 }
 
 TEST_F(FilterInProcess, EmptyMesh) {
   MeshModel* mm = addMesh(doc, {}, {});
   declare(*mm);
-  expectCleanFailure(*mm, "the mesh has no vertices");
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "the mesh has no vertices");
 }
 
 TEST_F(FilterInProcess, NanCoordinate) {
@@ -192,21 +196,21 @@ TEST_F(FilterInProcess, NanCoordinate) {
   mm->cm.vert[7].P()[1] = std::numeric_limits<float>::quiet_NaN();
   mm->cm.vert[0].SetS();
   declare(*mm);
-  expectCleanFailure(*mm, "vertex 7 has a non-finite coordinate");
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "vertex 7 has a non-finite coordinate");
 }
 
 TEST_F(FilterInProcess, NonManifoldEdge) {
   MeshModel* mm = addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
   mm->cm.vert[0].SetS();
   declare(*mm);
-  expectCleanFailure(*mm, "1 non-manifold edges");
+  expectCleanFailure(*mm, StatusCode::NonManifold, "1 non-manifold edges");
 }
 
 TEST_F(FilterInProcess, FaceRepeatingAVertex) {
   MeshModel* mm = addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 1, 1}});
   mm->cm.vert[0].SetS();
   declare(*mm);
-  expectCleanFailure(*mm, "face 1 uses vertex 1 twice");
+  expectCleanFailure(*mm, StatusCode::Degenerate, "face 1 uses vertex 1 twice");
 }
 
 TEST_F(FilterInProcess, QualityAsSpeedWithZeroOrNegativeSpeed) {
@@ -219,7 +223,7 @@ TEST_F(FilterInProcess, QualityAsSpeedWithZeroOrNegativeSpeed) {
     mm->cm.vert[0].SetS();
     declare(*mm);
     params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
-    expectCleanFailure(*mm, "vertex 5 has");
+    expectCleanFailure(*mm, StatusCode::InvalidInput, "vertex 5 has");
   }
 }
 
@@ -229,7 +233,7 @@ TEST_F(FilterInProcess, QualityAsSpeedWithoutQuality) {
   mm->cm.vert[0].SetS();
   declare(*mm);
   params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
-  expectCleanFailure(*mm, "the mesh has no per-vertex quality");
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "the mesh has no per-vertex quality");
 }
 
 TEST_F(FilterInProcess, ImpossibleParameters) {
@@ -238,10 +242,48 @@ TEST_F(FilterInProcess, ImpossibleParameters) {
   mm->cm.vert[0].SetS();
   declare(*mm);
   params.setValue(filters::param::kMaxDistance, AbsPercValue(-1.0f));
-  expectCleanFailure(*mm, "MaxDistance must be >= 0");
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "distance limit must be >= 0");
   declare(*mm);
   params.setValue(filters::param::kColorBy, EnumValue(7));
-  expectCleanFailure(*mm, "ColorBy must be 0");
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "ColorBy must be 0");
+}
+
+// Every default a filter declares is the default of the core's Params struct it feeds (one
+// source of defaults): a filter that hard-codes a value fails here when the core's changes.
+TEST_F(FilterInProcess, DeclaredDefaultsAreTheCoreParamsDefaults) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  mm->cm.bbox.SetNull();
+  for (const auto& v : mm->cm.vert) mm->cm.bbox.Add(v.cP());
+  const float diag = mm->cm.bbox.Diag();
+  const SurfaceRemeshParams remesh;
+  const AdaptiveRemeshParams adaptive;
+  for (const char* name : {"Remeshing: Geodesic Uniform", "Remeshing: Geodesic Adaptive"}) {
+    SCOPED_TRACE(name);
+    use(name);
+    declare(*mm);
+    EXPECT_EQ(params.getInt(filters::param::kTargetVertices), SurfaceRemeshParams::defaultTargetCount(mm->cm.vn));
+    EXPECT_EQ(params.getInt(filters::param::kTargetVertices), 647);  // 10% of fandisk's 6,475 vertices
+    EXPECT_FLOAT_EQ(params.getAbsPerc(filters::param::kSpacing),
+                    float(SurfaceRemeshParams::kDefaultSpacingFraction * diag));
+    EXPECT_EQ(params.getInt(filters::param::kSeed), int(remesh.sampling.seed));
+    EXPECT_EQ(params.getBool(filters::param::kSubVertexPlacement), remesh.sampling.subVertexPlacement);
+  }
+  use("Remeshing: Geodesic Uniform");
+  declare(*mm);
+  EXPECT_EQ(params.getInt(filters::param::kRefinement), remesh.refinement);
+  EXPECT_EQ(params.getInt(filters::param::kRelaxation), remesh.relaxation.iterations);
+  use("Remeshing: Geodesic Adaptive");
+  declare(*mm);
+  EXPECT_EQ(params.getEnum(filters::param::kField), int(adaptive.metric.field));
+  EXPECT_EQ(params.getEnum(filters::param::kMapping), int(adaptive.metric.speed.mapping));
+  EXPECT_FLOAT_EQ(params.getFloat(filters::param::kStrength), float(adaptive.metric.speed.strength));
+  EXPECT_FLOAT_EQ(params.getAbsPerc(filters::param::kCurvatureRadius), float(adaptive.metric.curvature.radius));
+  EXPECT_FALSE(params.hasParameter(filters::param::kRelaxation)) << "the adaptive preset sets the relaxation";
+  EXPECT_EQ(adaptive.remesh.relaxation.iterations, 0);
+  use("Compute Total Curvature (Normal Cycle) into Vertex Quality");
+  declare(*mm);
+  EXPECT_FLOAT_EQ(params.getAbsPerc(filters::param::kCurvatureRadius), float(CurvatureParams().radius));
 }
 
 TEST_F(FilterInProcess, UniformRemeshMakesANewLayerAndKeepsTheInput) {
@@ -337,32 +379,32 @@ TEST_F(FilterInProcess, UniformRemeshBadInputLeavesTheDocumentAlone) {
   MeshModel* nonManifold =
       addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
   declare(*nonManifold);
-  expectCleanFailure(*nonManifold, "non-manifold edges");
+  expectCleanFailure(*nonManifold, StatusCode::NonManifold, "non-manifold edges");
   EXPECT_EQ(doc.meshList.size(), 1) << "a failed filter added a layer";
   const TriMesh grid = test::planeGrid(4);
   MeshModel* cloud = addMesh(doc, grid.positions, {});
   declare(*cloud);
-  expectCleanFailure(*cloud, "the mesh has no faces");
+  expectCleanFailure(*cloud, StatusCode::InvalidInput, "the mesh has no faces");
   const TriMesh fandisk = test::loadRealMesh("fandisk.off");
   MeshModel* f = addMesh(doc, fandisk.positions, fandisk.triangles);
   declare(*f);
   params.setValue(filters::param::kTargetVertices, IntValue(100000));
-  expectCleanFailure(*f, "cannot place 100000 samples");
+  expectCleanFailure(*f, StatusCode::InvalidInput, "cannot place 100000 samples");
   declare(*f);
   params.setValue(filters::param::kTargetVertices, IntValue(0));
   params.setValue(filters::param::kSpacing, AbsPercValue(0.0f));
-  expectCleanFailure(*f, "TargetVertices is 0 and Spacing is not > 0");
+  expectCleanFailure(*f, StatusCode::InvalidInput, "give a target sample count or a spacing");
   declare(*f);
   params.setValue(filters::param::kRefinement, IntValue(7));
-  expectCleanFailure(*f, "Refinement must be 0 to 3");
+  expectCleanFailure(*f, StatusCode::InvalidInput, "Refinement must be 0 to 3");
   declare(*f);
   params.setValue(filters::param::kRelaxation, IntValue(-1));
-  expectCleanFailure(*f, "Relaxation must be 0 to 100 rounds");
+  expectCleanFailure(*f, StatusCode::InvalidInput, "Relaxation must be 0 to 100 rounds");
   std::vector<Vec3> line = grid.positions;
   for (Vec3& x : line) x = Vec3(x.x(), 0, 0);  // the grid collapsed onto a segment
   MeshModel* flat = addMesh(doc, line, grid.triangles);
   declare(*flat);
-  expectCleanFailure(*flat, "zero area");
+  expectCleanFailure(*flat, StatusCode::InvalidInput, "zero area");
   EXPECT_EQ(doc.meshList.size(), 4) << "a failed filter added a layer";
 }
 
@@ -410,7 +452,7 @@ TEST_F(FilterInProcess, UniformRemeshOfANonOrientableSurfaceFailsCleanly) {
   MeshModel* mm = addMesh(doc, strip.positions, strip.triangles);
   declare(*mm);
   params.setValue(filters::param::kTargetVertices, IntValue(20));
-  expectCleanFailure(*mm, "not orientable");
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "not orientable");
   EXPECT_EQ(doc.meshList.size(), 1) << "a failed filter added a layer";
 }
 
@@ -483,18 +525,18 @@ TEST_F(FilterInProcess, AdaptiveRemeshBadFieldsLeaveTheDocumentAlone) {
   use("Remeshing: Geodesic Adaptive");
   declare(*mm);
   params.setValue(filters::param::kField, EnumValue(0));  // vertex quality, but the mesh has none
-  expectCleanFailure(*mm, "the mesh has no vertex quality");
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "the mesh has no vertex quality");
   params.setValue(filters::param::kField, EnumValue(2));  // colour gradient, no colour
-  expectCleanFailure(*mm, "the mesh has no vertex colour");
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "the mesh has no vertex colour");
   mm->updateDataMask(MeshModel::MM_VERTQUALITY);
   for (auto& v : mm->cm.vert) v.Q() = v.cP()[0];  // negative values: not allowed with Attractive
   params.setValue(filters::param::kField, EnumValue(0));
-  expectCleanFailure(*mm, "negative");
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "negative");
   params.setValue(filters::param::kStrength, FloatValue(std::numeric_limits<float>::quiet_NaN()));
   params.setValue(filters::param::kMapping, EnumValue(0));
-  expectCleanFailure(*mm, "strength");
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "strength");
   params.setValue(filters::param::kMapping, EnumValue(7));
-  expectCleanFailure(*mm, "Mapping must be 0 to 2");
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "Mapping must be 0 to 2");
   EXPECT_EQ(doc.meshList.size(), 1) << "a failed filter added a layer";
 }
 
@@ -573,19 +615,19 @@ TEST_F(FilterInProcess, TotalCurvatureBadInputLeavesTheDocumentAlone) {
   const TriMesh grid = test::planeGrid(4);
   MeshModel* cloud = addMesh(doc, grid.positions, {});
   declare(*cloud);
-  expectCleanFailure(*cloud, "the mesh has no faces");
+  expectCleanFailure(*cloud, StatusCode::InvalidInput, "the mesh has no faces");
   MeshModel* nonManifold =
       addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
   declare(*nonManifold);
-  expectCleanFailure(*nonManifold, "non-manifold edges");
+  expectCleanFailure(*nonManifold, StatusCode::NonManifold, "non-manifold edges");
   MeshModel* nan = addMesh(doc, grid.positions, grid.triangles);
   nan->cm.vert[3].P()[1] = std::numeric_limits<float>::quiet_NaN();
   declare(*nan);
-  expectCleanFailure(*nan, "non-finite coordinate");
+  expectCleanFailure(*nan, StatusCode::InvalidInput, "non-finite coordinate");
   MeshModel* good = addMesh(doc, grid.positions, grid.triangles);
   declare(*good);
   params.setValue(filters::param::kCurvatureRadius, AbsPercValue(-1.0f));
-  expectCleanFailure(*good, "curvature radius");
+  expectCleanFailure(*good, StatusCode::InvalidInput, "curvature radius");
   EXPECT_EQ(doc.meshList.size(), 4) << "a failed filter added a layer";
 }
 

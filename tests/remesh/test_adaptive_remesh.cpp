@@ -23,11 +23,9 @@
 #include <tuple>
 #include <vector>
 
-#include "core/field/curvature.h"
+#include "core/field/adaptive_metric.h"
 #include "core/measure/evaluation.h"
-#include "core/geodesic/farthest_point_sampling.h"
-#include "core/remesh/geodesic_delaunay.h"
-#include "core/field/speed_field.h"
+#include "core/remesh/remesh_surface.h"
 #include "tests/support/test_support.h"
 
 namespace gr {
@@ -38,38 +36,33 @@ constexpr double kRadiusInEdges = 2.0;     // curvature ball radius, in mean edg
 constexpr double kCountTolerance = 0.01;   // adaptive final count within 1% below the uniform's
 constexpr int kCalibrationRuns = 6;
 
-/// The adaptive metric of a mesh: Attractive total curvature with the parameters above.
-Metric adaptiveMetric(const TriMesh& m) {
-  CurvatureParams cp;
-  cp.radius = kRadiusInEdges * m.meanEdgeLength();
-  const Expected<CurvatureResult> tau = totalCurvature(m, cp);
-  EXPECT_TRUE(tau) << tau.status().message;
-  if (!tau) return Metric::uniform();
-  SpeedFieldParams sp;
-  sp.mapping = SpeedMapping::Attractive;
-  sp.strength = kStrength;
-  const Expected<SpeedFieldResult> speed = speedFromField(m, tau->tau, sp);
-  EXPECT_TRUE(speed) << speed.status().message;
-  if (!speed) return Metric::uniform();
-  EXPECT_FALSE(speed->usedFallback()) << speed->fallback;
-  return speed->metric;
+/// The metric of a mesh: Attractive total curvature with the parameters above (adaptive_metric.h).
+Metric curvatureMetric(const TriMesh& m) {
+  AdaptiveMetricParams params;
+  params.field = AdaptiveField::TotalCurvature;
+  params.curvature.radius = kRadiusInEdges * m.meanEdgeLength();
+  params.speed.mapping = SpeedMapping::Attractive;
+  params.speed.strength = kStrength;
+  const Expected<AdaptiveMetricResult> metric = adaptiveMetric(m, {}, params);
+  EXPECT_TRUE(metric) << metric.status().message;
+  if (!metric) return Metric::uniform();
+  EXPECT_FALSE(metric->speed.usedFallback()) << metric->speed.fallback;
+  return metric->speed.metric;
 }
 
-/// Farthest-point sampling + geodesic Delaunay on one engine, as the filters run them.
-Expected<DelaunayResult> remesh(const TriMesh& m, const Metric& metric, int target) {
-  FastMarcher marcher(m, metric);
-  FpsParams fps;
-  fps.targetCount = target;
-  Expected<FpsResult> s = farthestPointSampling(marcher, fps);
-  if (!s) return s.status();
-  return geodesicDelaunay(marcher, std::move(s->origin));
+/// remeshSurface with the adaptive preset (no relaxation), for the uniform and the adaptive runs alike.
+Expected<SurfaceRemeshResult> remesh(const TriMesh& m, const Metric& metric, int target) {
+  SurfaceRemeshParams params = SurfaceRemeshParams::adaptive();
+  params.sampling.targetCount = target;
+  params.measure = false;
+  return remeshSurface(m, metric, params);
 }
 
 /// The adaptive result with the largest final vertex count not above `maxCount`: start from the
 /// target maxCount, lower it by the excess of each run (repair additions), and raise it by half
 /// the shortfall when a run falls more than 1% below.
 struct Calibrated {
-  DelaunayResult result;
+  SurfaceRemeshResult result;
   int target = 0;
   int runs = 0;
 };
@@ -77,7 +70,7 @@ Calibrated calibrate(const TriMesh& m, const Metric& metric, int maxCount) {
   Calibrated best;
   int target = maxCount;
   for (int run = 0; run < kCalibrationRuns; ++run) {
-    Expected<DelaunayResult> r = remesh(m, metric, target);
+    Expected<SurfaceRemeshResult> r = remesh(m, metric, target);
     EXPECT_TRUE(r) << r.status().message;
     if (!r) break;
     ++best.runs;
@@ -114,7 +107,7 @@ const Loaded& loaded(const std::string& name) {
   if (!slot) {
     slot = std::make_unique<Loaded>();
     slot->mesh = test::loadRealMesh(name);
-    if (slot->mesh.vertexCount() > 0) slot->metric = adaptiveMetric(slot->mesh);
+    if (slot->mesh.vertexCount() > 0) slot->metric = curvatureMetric(slot->mesh);
   }
   return *slot;
 }
@@ -131,7 +124,7 @@ TEST_P(AdaptiveError, LowerThanUniformAtTheSameVertexCount) {
   ASSERT_GT(in.mesh.vertexCount(), 0);
   ASSERT_FALSE(in.metric.isUniform());
   const int target = static_cast<int>(std::lround(fraction * in.mesh.vertexCount()));
-  const Expected<DelaunayResult> uniform = remesh(in.mesh, Metric::uniform(), target);
+  const Expected<SurfaceRemeshResult> uniform = remesh(in.mesh, Metric::uniform(), target);
   ASSERT_TRUE(uniform) << uniform.status().message;
   const int n = uniform->mesh.vertexCount();
   const Calibrated adaptive = calibrate(in.mesh, in.metric, n);
@@ -179,7 +172,7 @@ void expectSameTopology(const std::string& label, const TriMesh& m, const Metric
   const test::Recount input = test::recount(m.triangles, m.vertexCount());
   ASSERT_TRUE(input.manifoldEdges && input.manifoldVertices && input.oriented) << label << ": input not manifold";
   const int target = std::max(8, static_cast<int>(fraction * m.vertexCount()));
-  const Expected<DelaunayResult> r = remesh(m, metric, target);
+  const Expected<SurfaceRemeshResult> r = remesh(m, metric, target);
   ASSERT_TRUE(r) << label << ": " << r.status().message;
   const test::Recount out = test::recount(r->mesh.triangles, r->mesh.vertexCount());
   std::printf("%-22s %2.0f%%: %d samples + %d added in %d rounds -> %d vertices; components %d/%d, genus %d/%d, "
@@ -225,7 +218,7 @@ TEST(AdaptiveTopologySynthetic, TwoComponentsAtTenAndThirtyPercent) {
   for (const Vec3& p : b.positions) pos.push_back(Vec3(2.0 * p.x() + 3.0, p.y(), p.z()));
   for (const Tri& t : b.triangles) tris.push_back({t[0] + a.vertexCount(), t[1] + a.vertexCount(), t[2] + a.vertexCount()});
   const TriMesh m = std::move(buildTriMesh(pos, tris)).value();
-  const Metric metric = adaptiveMetric(m);
+  const Metric metric = curvatureMetric(m);
   ASSERT_FALSE(metric.isUniform());
   const test::Recount input = test::recount(m.triangles, m.vertexCount());
   ASSERT_EQ(input.components, 2);

@@ -16,7 +16,7 @@
 #include <string>
 #include <tuple>
 
-#include "core/remesh/remesh.h"
+#include "core/remesh/remesh_surface.h"
 #include "tests/support/test_support.h"
 
 namespace gr {
@@ -27,12 +27,12 @@ class RemeshQuality : public ::testing::TestWithParam<std::tuple<std::string, do
 TEST_P(RemeshQuality, WellShapedTrianglesAtDefaultSettings) {
   const auto& [name, fraction] = GetParam();
   const TriMesh input = test::loadRealMesh(name);
-  FastMarcher marcher(input, Metric::uniform());
-  RemeshParams params;
+  SurfaceRemeshParams params;
   params.sampling.targetCount = static_cast<int>(fraction * input.vertexCount());
-  const Expected<RemeshResult> remeshed = remesh(marcher, params);
+  params.measure = false;
+  const Expected<SurfaceRemeshResult> remeshed = remeshSurface(input, params);
   ASSERT_TRUE(remeshed) << remeshed.status().message;
-  const DelaunayResult& r = remeshed->mesh;
+  const SurfaceRemeshResult& r = *remeshed;
   EXPECT_EQ(r.mesh.vertexCount(), params.sampling.targetCount + r.addedSamples);
   const test::Recount in = test::recount(input.triangles, input.vertexCount());
   const test::Recount out = test::recount(r.mesh.triangles, r.mesh.vertexCount());
@@ -61,12 +61,12 @@ TEST(RemeshQualityBadTriangles, NeedlesAndZeroAreaFaces) {
     int zeroArea = 0;
     const TriMesh input = test::withBadTriangles(test::loadRealMesh(name), &zeroArea);
     ASSERT_GT(zeroArea, 100);
-    FastMarcher marcher(input, Metric::uniform());
-    RemeshParams params;
+    SurfaceRemeshParams params;
     params.sampling.targetCount = input.vertexCount() / 10;
-    const Expected<RemeshResult> remeshed = remesh(marcher, params);
+    params.measure = false;
+    const Expected<SurfaceRemeshResult> remeshed = remeshSurface(input, params);
     ASSERT_TRUE(remeshed) << remeshed.status().message;
-    const TriMesh& out = remeshed->mesh.mesh;
+    const TriMesh& out = remeshed->mesh;
     const test::Recount in = test::recount(input.triangles, input.vertexCount());
     const test::Recount rc = test::recount(out.triangles, out.vertexCount());
     EXPECT_TRUE(rc.manifoldEdges && rc.manifoldVertices && rc.oriented);
@@ -74,7 +74,7 @@ TEST(RemeshQualityBadTriangles, NeedlesAndZeroAreaFaces) {
     EXPECT_EQ(rc.genusSum, in.genusSum);
     for (int v = 0; v < out.vertexCount(); ++v) {
       ASSERT_TRUE(out.positions[v].allFinite());
-      ASSERT_LT((remeshed->mesh.origin[v].position(input) - out.positions[v]).norm(), 1e-9);
+      ASSERT_LT((remeshed->origin[v].position(input) - out.positions[v]).norm(), 1e-9);
     }
     const test::AngleRecount angles = test::recountAngles(out);
     std::printf("%s with %d zero-area faces, 10%%: %d vertices, smallest angle %.1f deg, %.2f %% under 30 deg\n", name,

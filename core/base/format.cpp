@@ -1,0 +1,18 @@
+#include "core/base/format.h"
+
+#include <cstdio>
+
+namespace gr {
+
+std::string formatNumber(double x, const char* spec) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, spec, x);
+  return buf;
+}
+
+std::string formatDuration(double milliseconds) {
+  return milliseconds < 10000.0 ? formatNumber(milliseconds, "%.3g") + " ms"
+                                : formatNumber(milliseconds / 1000.0, "%.3g") + " s";
+}
+
+}  // namespace gr

@@ -1,0 +1,173 @@
+#include "core/remesh/remesh_surface.h"
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "core/geodesic/fast_marching.h"
+#include "core/mesh/subdivide.h"
+
+namespace gr {
+namespace {
+
+/// Seconds since `start`, and restarts it.
+double lap(std::chrono::steady_clock::time_point& start) {
+  const auto now = std::chrono::steady_clock::now();
+  const double seconds = std::chrono::duration<double>(now - start).count();
+  start = now;
+  return seconds;
+}
+
+/// Refuses what no stage can work with, before any work: non-manifold input, parameters out of range.
+Status checkRemeshInput(const TriMesh& input, const SurfaceRemeshParams& params) {
+  const Topology& topology = input.topology;
+  if (!topology.isManifold())
+    return nonManifold("the mesh has " + std::to_string(topology.nonManifoldEdges) + " non-manifold edges and " +
+                       std::to_string(topology.nonManifoldVertices) +
+                       " non-manifold vertices; repair them first (Cleaning and Repairing menu)");
+  if (params.refinement < 0 || params.refinement > SurfaceRemeshParams::kMaxRefinement)
+    return invalidInput("Refinement must be 0 to " + std::to_string(SurfaceRemeshParams::kMaxRefinement) + ", got " +
+                        std::to_string(params.refinement));
+  const int rounds = params.relaxation.iterations;
+  if (rounds < 0 || rounds > SurfaceRemeshParams::kMaxRelaxationRounds)
+    return invalidInput("Relaxation must be 0 to " + std::to_string(SurfaceRemeshParams::kMaxRelaxationRounds) +
+                        " rounds, got " + std::to_string(rounds));
+  return Status::ok();
+}
+
+/// Faces with no neighbour across any of their edges.
+int countLooseFaces(const TriMesh& mesh) {
+  int loose = 0;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+    loose += mesh.oppositeCorner[3 * f] < 0 && mesh.oppositeCorner[3 * f + 1] < 0 && mesh.oppositeCorner[3 * f + 2] < 0;
+  return loose;
+}
+
+/// The surface the work runs on: a coherently oriented copy when some faces run against their
+/// neighbours (the output takes its orientation from the faces), else nothing (use the input).
+struct OrientedSurface {
+  std::optional<TriMesh> copy;
+  std::vector<char> flipped;  ///< per face, 1 if the copy swapped its corners 1 and 2
+};
+Expected<OrientedSurface> orientedSurface(const TriMesh& input) {
+  OrientedSurface s;
+  if (input.topology.inconsistentEdges == 0) return s;
+  Expected<TriMesh> oriented = orientCoherently(input, &s.flipped);
+  if (!oriented) return oriented.status();
+  s.copy = std::move(oriented).value();
+  return s;
+}
+
+/// The three stages on one engine: sampling, triangulation of its Voronoi diagram, relaxation.
+Status sampleTriangulateRelax(FastMarcher& marcher, const SurfaceRemeshParams& params, Progress progress,
+                              FpsResult& sampling, DelaunayResult& triangulation, SurfaceRemeshResult& r) {
+  auto clock = std::chrono::steady_clock::now();
+  Expected<FpsResult> fps = farthestPointSampling(marcher, params.sampling, progress.sub(0.0, 0.65));
+  if (!fps) return fps.status();
+  sampling = std::move(*fps);
+  r.times.sampling = lap(clock);
+  Expected<DelaunayResult> dual =
+      geodesicDelaunay(marcher, sampling.origin, params.triangulation, progress.sub(0.65, 0.95));
+  if (!dual) return dual.status();
+  triangulation = std::move(*dual);
+  r.times.triangulation = lap(clock);
+  if (!progress.report(0.95, "Relaxation")) return cancelled();
+  Expected<RelaxationResult> relaxed =
+      relaxOnSurface(triangulation.mesh, triangulation.origin, marcher.mesh(), params.relaxation);
+  if (!relaxed) return relaxed.status();
+  r.relaxation = *relaxed;
+  r.times.relaxation = lap(clock);
+  return Status::ok();
+}
+
+/// Angles of the output and its distance to the input both ways.
+Status measureOutput(const TriMesh& input, SurfaceRemeshResult& r, Progress progress) {
+  r.measures.angles = angleStatistics(r.mesh);
+  r.measures.toInput = surfaceDistance(r.mesh, input, progress.sub(0.0, 0.2));
+  r.measures.fromInput = surfaceDistance(input, r.mesh, progress.sub(0.2, 1.0));
+  if (!r.measures.toInput.complete || !r.measures.fromInput.complete) return cancelled();
+  r.measures.inputDiagonal = input.boundingBoxDiagonal();
+  return Status::ok();
+}
+
+/// Each output vertex's point on the mesh the fronts ran on, as a point of the input: through
+/// the subdivision, then with the orientation flip of its face undone.
+std::vector<SurfacePoint> originsOnInput(const std::vector<SurfacePoint>& onFine, const Subdivision& fine,
+                                         const TriMesh& surface, const std::vector<char>& flipped) {
+  std::vector<SurfacePoint> origin(onFine.size());
+  for (size_t i = 0; i < origin.size(); ++i) {
+    origin[i] = fine.originOf(surface, onFine[i]);
+    if (origin[i].face >= 0 && !flipped.empty() && flipped[origin[i].face])
+      std::swap(origin[i].bary[1], origin[i].bary[2]);
+  }
+  return origin;
+}
+
+}  // namespace
+
+int SurfaceRemeshParams::defaultTargetCount(int vertexCount) {
+  return std::max(kMinDefaultTarget, static_cast<int>(kDefaultTargetFraction * vertexCount));
+}
+
+SurfaceRemeshParams SurfaceRemeshParams::adaptive() {
+  SurfaceRemeshParams p;
+  p.relaxation.iterations = 0;
+  return p;
+}
+
+Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& metric,
+                                            const SurfaceRemeshParams& params, Progress progress) {
+  if (Status s = checkRemeshInput(input, params); !s) return s;
+  auto clock = std::chrono::steady_clock::now();
+  SurfaceRemeshResult r;
+  Expected<OrientedSurface> oriented = orientedSurface(input);
+  if (!oriented) return oriented.status();
+  const TriMesh& surface = oriented->copy ? *oriented->copy : input;
+  Expected<Subdivision> fine = subdivideMidpoint(surface, params.refinement);
+  if (!fine) return fine.status();
+  Expected<Metric> fineMetric = transferMetric(metric, surface, fine->origin);
+  if (!fineMetric) return fineMetric.status();
+  r.times.prepare = lap(clock);
+  FastMarcher marcher(fine->mesh, *fineMetric);  // one engine: the triangulation goes on from the sampling's field
+  r.times.engine = lap(clock);
+
+  FpsResult sampling;
+  DelaunayResult dual;
+  const double remeshShare = params.measure ? 0.9 : 1.0;
+  if (Status s = sampleTriangulateRelax(marcher, params, progress.sub(0.0, remeshShare), sampling, dual, r); !s)
+    return s;
+  r.mesh = std::move(dual.mesh);
+  r.origin = originsOnInput(dual.origin, *fine, surface, oriented->flipped);
+  r.cell.assign(dual.cell.begin(), dual.cell.begin() + input.vertexCount());  // input vertices come first
+  r.frontVertices = fine->mesh.vertexCount();
+  r.sampledCount = static_cast<int>(sampling.samples.size());
+  r.coveringRadius = sampling.coveringRadius;
+  r.addedSamples = dual.addedSamples;
+  r.droppedSamples = dual.droppedSamples;
+  r.repairRounds = dual.repairRounds;
+  r.flippedEdges = dual.flippedEdges;
+  r.reorientedFaces = static_cast<int>(std::count(oriented->flipped.begin(), oriented->flipped.end(), 1));
+  r.looseFaces = countLooseFaces(input);
+  r.looksLikeTriangleSoup = r.looseFaces > 0 && 10 * r.looseFaces >= input.faceCount();
+  lap(clock);
+  if (params.measure)
+    if (Status s = measureOutput(input, r, progress.sub(remeshShare, 1.0)); !s) return s;
+  r.times.measure = lap(clock);
+  return r;
+}
+
+Expected<AdaptiveRemeshResult> remeshAdaptive(const TriMesh& input, const std::vector<double>& values,
+                                              const AdaptiveRemeshParams& params, Progress progress) {
+  AdaptiveRemeshResult r;
+  Expected<AdaptiveMetricResult> metric = adaptiveMetric(input, values, params.metric, progress.sub(0.0, 0.1));
+  if (!metric) return metric.status();
+  r.metric = std::move(*metric);
+  Expected<SurfaceRemeshResult> remeshed = remeshSurface(input, r.metric.speed.metric, params.remesh, progress.sub(0.1, 1.0));
+  if (!remeshed) return remeshed.status();
+  r.remesh = std::move(*remeshed);
+  return r;
+}
+
+}  // namespace gr

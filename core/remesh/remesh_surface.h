@@ -1,0 +1,124 @@
+// Geodesic remeshing of a surface, the whole pipeline every caller runs (paper §3.1-3.4): the
+// filters, the tests and the benchmarks call remeshSurface and nothing else.
+//
+//   input --orientCoherently--> oriented copy (only if some faces run against their neighbours)
+//         --subdivideMidpoint--> the mesh the fronts run on (refinement levels, same surface)
+//         --transferMetric-----> the metric at the subdivision's vertices
+//         --farthestPointSampling--> samples + Voronoi cells          (one FastMarcher for
+//         --geodesicDelaunay-------> valid mesh of the input's topology  both stages)
+//         --relaxOnSurface---------> same mesh, better angles
+//         --map back---------------> each output vertex's origin on the input (flips undone)
+//         --measure (optional)-----> angles, surface distance both ways
+//
+// Cost: the sampling, O(V log V log n) for V front vertices and n samples, dominates; the
+// triangulation and relaxation are O(V + n); the measure is O(V + F) distance queries.
+// Nothing is written into the input.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "core/base/progress.h"
+#include "core/base/status.h"
+#include "core/field/adaptive_metric.h"
+#include "core/geodesic/farthest_point_sampling.h"
+#include "core/geodesic/metric.h"
+#include "core/measure/evaluation.h"
+#include "core/mesh/surface_point.h"
+#include "core/mesh/tri_mesh.h"
+#include "core/remesh/geodesic_delaunay.h"
+#include "core/remesh/surface_relaxation.h"
+
+namespace gr {
+
+struct SurfaceRemeshParams {
+  static constexpr int kMaxRefinement = 3;           ///< largest `refinement`
+  static constexpr int kMaxRelaxationRounds = 100;   ///< largest relaxation.iterations
+  static constexpr double kDefaultTargetFraction = 0.1;   ///< default target: this share of the input's vertices
+  static constexpr int kMinDefaultTarget = 4;             ///< ... but at least this many
+  static constexpr double kDefaultSpacingFraction = 0.02;  ///< default spacing: this share of the bbox diagonal
+
+  /// The default target count for an input of `vertexCount` vertices (10%, at least 4).
+  static int defaultTargetCount(int vertexCount);
+  /// The adaptive preset: no relaxation, whose Laplacian evens out edge lengths and so undoes a
+  /// non-uniform metric's density (a Laplacian weighted by the metric keeps the density but
+  /// moves the samples the metric put on sharp edges, doubling the surface error on fandisk).
+  static SurfaceRemeshParams adaptive();
+
+  FpsParams sampling;            ///< target count or spacing, seed, sub-vertex placement
+  DelaunayParams triangulation;  ///< repair rounds and the final Delaunay flips
+  RelaxationParams relaxation;   ///< tangential relaxation (iterations 0 to kMaxRelaxationRounds)
+  /// Midpoint subdivisions of the input the fronts run on (0 to kMaxRefinement): finer cells and
+  /// samples between input vertices, about 4x the time per level.
+  int refinement = 0;
+  /// Also measure the output: angle statistics and the surface distance to the input both ways
+  /// (the figures of the filters' log).
+  bool measure = true;
+};
+
+/// How good the output is, measured against the input (SurfaceRemeshParams::measure).
+struct RemeshMeasures {
+  AngleStatistics angles;
+  SurfaceDistance toInput;    ///< from the output's surface to the input's
+  SurfaceDistance fromInput;  ///< from the input's surface to the output's
+  double inputDiagonal = 0.0; ///< the input's bounding-box diagonal, the figures' unit in the log
+};
+
+/// Wall time of each stage, in seconds (the benchmarks report them; the sum is about the whole call).
+struct RemeshStageTimes {
+  double prepare = 0.0;        ///< orientation, subdivision, metric transfer
+  double engine = 0.0;         ///< the FastMarcher's construction
+  double sampling = 0.0;
+  double triangulation = 0.0;  ///< geodesic Delaunay with its repair and flips
+  double relaxation = 0.0;
+  double measure = 0.0;        ///< angles and surface distances (SurfaceRemeshParams::measure)
+};
+
+struct SurfaceRemeshResult {
+  TriMesh mesh;                      ///< the output: manifold, oriented, the input's topology
+  std::vector<SurfacePoint> origin;  ///< per output vertex, where it lies on the input
+  /// Per input vertex, its Voronoi cell: the output vertex it belongs to.
+  std::vector<int> cell;
+  int frontVertices = 0;     ///< vertices of the mesh the fronts ran on (input subdivided `refinement` times)
+  int sampledCount = 0;      ///< samples placed by farthest-point sampling
+  double coveringRadius = 0.0;  ///< largest distance to a sample after the sampling (a travel time with a metric)
+  int addedSamples = 0;      ///< samples the repair of the triangulation added
+  int droppedSamples = 0;    ///< samples inside faces left out (nearest to no vertex)
+  int repairRounds = 0;
+  int flippedEdges = 0;      ///< edges flipped to make the triangulation locally Delaunay
+  RelaxationResult relaxation;
+  int reorientedFaces = 0;   ///< input faces the work copy flipped to orient the surface coherently
+  int looseFaces = 0;        ///< input faces that share no edge with another face
+  /// True when loose faces are at least a tenth of the input: a triangle soup (an STL read
+  /// without merging vertices), each face its own component, which comes back unchanged.
+  bool looksLikeTriangleSoup = false;
+  RemeshMeasures measures;   ///< filled when SurfaceRemeshParams::measure is set
+  RemeshStageTimes times;
+};
+
+/// Remeshes `input` under `metric` (one P per input vertex, or uniform). Fails with NonManifold
+/// (non-manifold edges or vertices), InvalidInput (refinement or relaxation rounds out of range,
+/// a metric of the wrong size, bad sampling parameters, a non-orientable component, a component
+/// of zero area), NotConverged (the repair of the triangulation ran out of rounds) or Cancelled.
+Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& metric,
+                                            const SurfaceRemeshParams& params = {}, Progress progress = {});
+/// Uniform remeshing: the same with P = 1 (plain geodesic distance).
+inline Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const SurfaceRemeshParams& params = {},
+                                                   Progress progress = {}) {
+  return remeshSurface(input, Metric::uniform(), params, std::move(progress));
+}
+
+/// Adaptive remeshing: the metric from a field (adaptive_metric.h), then remeshSurface with it.
+struct AdaptiveRemeshParams {
+  AdaptiveMetricParams metric;
+  SurfaceRemeshParams remesh = SurfaceRemeshParams::adaptive();
+};
+struct AdaptiveRemeshResult {
+  AdaptiveMetricResult metric;
+  SurfaceRemeshResult remesh;
+};
+/// `values` as for adaptiveMetric. Fails as adaptiveMetric, then as remeshSurface.
+Expected<AdaptiveRemeshResult> remeshAdaptive(const TriMesh& input, const std::vector<double>& values,
+                                              const AdaptiveRemeshParams& params = {}, Progress progress = {});
+
+}  // namespace gr

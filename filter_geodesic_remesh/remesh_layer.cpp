@@ -1,0 +1,132 @@
+#include "filter_geodesic_remesh/remesh_layer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/base/format.h"
+#include "filter_geodesic_remesh/parameter_names.h"
+#include "vcg_adapters/cmesho_adapter.h"
+
+namespace gr::filters {
+namespace {
+
+std::string count(int n) { return std::to_string(n); }
+
+/// Faces that ran against their neighbours: the work used an oriented copy.
+void logOrientation(const TriMesh& input, const SurfaceRemeshResult& r, FilterContext& ctx) {
+  if (r.reorientedFaces == 0) return;
+  ctx.log(count(r.reorientedFaces) + " of the " + count(input.faceCount()) +
+          " faces run against their neighbours' orientation (" + count(input.topology.inconsistentEdges) +
+          " edges): the remeshing uses a coherently oriented copy; the input layer is not changed");
+}
+
+/// The first two lines: what was remeshed into what, and how the samples came about.
+void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshCommit& commit, const QString& label,
+               FilterContext& ctx) {
+  ctx.log(commit.title + " of " + count(input.vertexCount()) + " vertices, " + count(input.faceCount()) + " faces" +
+          (commit.refinement > 0 ? " (fronts on " + count(r.frontVertices) + " vertices, " + count(commit.refinement) +
+                                       " subdivisions)"
+                                 : std::string()) +
+          ": " + count(r.mesh.vertexCount()) + " vertices, " + count(r.mesh.faceCount()) + " faces on the new layer '" +
+          label.toStdString() + "'");
+  ctx.log("Samples: " + count(r.sampledCount) + " by farthest-point sampling, " + count(r.addedSamples) +
+          " added to make the triangulation valid (" + count(r.repairRounds) + " rounds)" +
+          (r.droppedSamples > 0 ? ", " + count(r.droppedSamples) + " left out (nearest to no vertex)" : std::string()) +
+          "; covering radius " + formatNumber(r.coveringRadius, "%.4g") +
+          (commit.weighted ? " (a travel time: distance over speed)" : std::string()) +
+          (r.flippedEdges > 0 ? "; " + count(r.flippedEdges) + " edges flipped to Delaunay" : std::string()));
+}
+
+/// A triangle soup comes back as it was: say why, and what helps.
+void warnIfSoup(const TriMesh& input, const SurfaceRemeshResult& r, FilterContext& ctx) {
+  if (!r.looksLikeTriangleSoup) return;
+  ctx.warn(count(r.looseFaces) + " of the " + count(input.faceCount()) +
+           " faces share no edge with another face (separate triangles, as an STL file read without merging "
+           "its vertices gives): each is a component of its own and keeps its three vertices. Run 'Cleaning "
+           "and Repairing > Merge Close Vertices' first to remesh the surface they form.");
+}
+
+/// Relaxation, topology, angles and the distance to the input.
+void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
+  const RelaxationResult& relaxed = r.relaxation;
+  if (relaxed.iterations > 0)
+    ctx.log("Relaxation on the input surface: " + count(relaxed.iterations) + " rounds, " + count(relaxed.moves) +
+            " vertex moves, " + count(relaxed.flips) + " flips; " + count(relaxed.fixedVertices) +
+            " vertices kept in place (boundary, creases and corners)");
+  const Topology& topology = r.mesh.topology;
+  ctx.log("Topology kept: " + count(topology.components) + " components, genus " + count(topology.genus) + ", " +
+          count(topology.boundaryLoops) + " boundary loops");
+  const RemeshMeasures& m = r.measures;
+  ctx.log("Angles: standard deviation " + formatNumber(m.angles.stdDegrees, "%.1f") + " deg, smallest " +
+          formatNumber(m.angles.minDegrees, "%.1f") + " deg, " + formatNumber(100 * m.angles.shareMinBelow30, "%.2f") +
+          " % of triangles with an angle under 30 deg");
+  const double rms = std::sqrt(0.5 * (m.toInput.rms * m.toInput.rms + m.fromInput.rms * m.fromInput.rms));
+  const double diag = m.inputDiagonal;
+  ctx.log("Hausdorff distance to the input (one-sided): " + formatNumber(100 * m.toInput.max / diag, "%.3f") +
+          " % of the bounding-box diagonal; two-sided " +
+          formatNumber(100 * std::max(m.toInput.max, m.fromInput.max) / diag, "%.3f") + " %, RMS " +
+          formatNumber(100 * rms / diag, "%.3f") + " %");
+}
+
+}  // namespace
+
+void declareSampling(const MeshModel& mesh, RichParameterList& params) {
+  const float diag = mesh.cm.bbox.IsNull() ? 1.0f : mesh.cm.bbox.Diag();
+  const SurfaceRemeshParams defaults;
+  const double spacing = SurfaceRemeshParams::kDefaultSpacingFraction;
+  params.addParam(RichInt(param::kTargetVertices, SurfaceRemeshParams::defaultTargetCount(mesh.cm.vn),
+                          "Target vertices",
+                          "Number of vertices of the new mesh (default: " +
+                              QString::number(100 * SurfaceRemeshParams::kDefaultTargetFraction) +
+                              "% of the input). The repair of the geodesic Delaunay triangulation may add a few; the "
+                              "log says how many. 0 = use Spacing."));
+  params.addParam(RichAbsPerc(param::kSpacing, float(spacing * diag), 0.0f, diag, "Spacing",
+                              "Used when Target vertices is 0: sample until every point of the surface is closer "
+                              "than this geodesic distance to a sample (mesh units or % of the bounding-box "
+                              "diagonal; default " + QString::number(100 * spacing) + "%)."));
+  params.addParam(RichInt(param::kSeed, int(defaults.sampling.seed), "Seed",
+                          "Picks the start of the farthest-point sampling: the same seed gives the same mesh "
+                          "(default " + QString::number(defaults.sampling.seed) + ")."));
+  params.addParam(RichBool(param::kSubVertexPlacement, defaults.sampling.subVertexPlacement, "Sub-vertex placement",
+                           QString("Place each new sample where the fronts meet, inside a face, rather than at the "
+                                   "farthest input vertex (paper 3.1): fewer thin triangles on smooth surfaces, but "
+                                   "samples may leave sharp edges (default ") +
+                               (defaults.sampling.subVertexPlacement ? "true" : "false") + ")."));
+}
+
+FpsParams readSampling(const RichParameterList& params) {
+  FpsParams fps;
+  fps.targetCount = params.getInt(param::kTargetVertices);
+  fps.minSpacing = fps.targetCount > 0 ? 0.0 : params.getAbsPerc(param::kSpacing);
+  fps.seed = static_cast<unsigned>(params.getInt(param::kSeed));
+  fps.subVertexPlacement = params.getBool(param::kSubVertexPlacement);
+  return fps;
+}
+
+void commitRemesh(MeshDocument& doc, const CurrentMesh& current, const SurfaceRemeshResult& result,
+                  const RemeshCommit& commit, FilterContext& ctx) {
+  MeshModel* mm = current.model;
+  const adapters::CoreView& view = current.view;
+  const bool copyColor = mm->hasDataMask(MeshModel::MM_VERTCOLOR);
+  const bool copyQuality = mm->hasDataMask(MeshModel::MM_VERTQUALITY);
+  const QString label = mm->label() + QString::fromStdString(commit.layerSuffix);
+  MeshModel* out = doc.addNewMesh("", label, true);
+  if (copyColor) out->updateDataMask(MeshModel::MM_VERTCOLOR);
+  if (copyQuality) out->updateDataMask(MeshModel::MM_VERTQUALITY);
+  adapters::writeMesh(result.mesh, out->cm, mm->cm, view, result.origin, copyColor, copyQuality);
+  if (commit.labelInput) {
+    adapters::writeVertexQuality(mm->cm, view, std::vector<double>(result.cell.begin(), result.cell.end()), -1.0);
+    adapters::colorByLabel(mm->cm, view, result.cell, result.mesh.vertexCount());
+    mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
+  }
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - commit.start).count();
+  logOrientation(view.mesh, result, ctx);
+  logCounts(view.mesh, result, commit, label, ctx);
+  warnIfSoup(view.mesh, result, ctx);
+  logQuality(result, ctx);
+  ctx.log("Time: " + formatDuration(ms));
+}
+
+}  // namespace gr::filters

@@ -5,7 +5,8 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/setup.sh"
 start=$(date +%s)
-bash "$root/scripts/build.sh"
+# Warnings of our own code are errors here (and so in CI): GR_STRICT=ON.
+CMAKE_ARGS="-DGR_STRICT=ON ${CMAKE_ARGS:-}" bash "$root/scripts/build.sh"
 echo "[test] build took $(( $(date +%s) - start )) s"
 cd "${BUILD_DIR:-$root/build}"
 ctest --output-on-failure -j "$(nproc)"

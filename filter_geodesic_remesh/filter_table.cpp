@@ -7,6 +7,10 @@ namespace gr::filters {
 
 enum FilterId { kFastMarching = 0, kUniformRemesh = 1, kAdaptiveRemesh = 2, kTotalCurvature = 3 };
 
+const auto kQualityAndColorClass =
+    MeshFilterInterface::FilterClass(MeshFilterInterface::Quality + MeshFilterInterface::VertexColoring);
+constexpr int kWritesQualityAndColor = MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR;
+
 const std::vector<FilterSpec>& filterTable() {
   static const std::vector<FilterSpec> table = {
       {kFastMarching, "Geodesic Distance: Fast Marching from Selected Vertices",
@@ -16,8 +20,7 @@ const std::vector<FilterSpec>& filterTable() {
        "Writes the distance into the vertex quality (-1 where not reached) and colors the vertices by distance "
        "or by Voronoi region.<br>See G. Peyr&eacute; and L. Cohen, <i>Geodesic Remeshing Using Front "
        "Propagation</i>, IJCV 2006, &sect;2.1&ndash;2.2.",
-       MeshFilterInterface::FilterClass(MeshFilterInterface::Quality + MeshFilterInterface::VertexColoring),
-       MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR, declareFastMarching, applyFastMarching},
+       kQualityAndColorClass, kWritesQualityAndColor, declareFastMarching, applyFastMarching},
       {kUniformRemesh, "Remeshing: Geodesic Uniform",
        "Remeshes the surface with evenly spaced vertices: greedy farthest-point sampling with geodesic "
        "distances from fast marching, then the geodesic Delaunay triangulation of the samples (the dual of "
@@ -27,8 +30,7 @@ const std::vector<FilterSpec>& filterTable() {
        "tangential relaxation on the input surface give well-shaped triangles (creases and tips stay). The "
        "result goes to a new layer; vertex colour and quality of the input are carried over.<br>See G. Peyr&eacute; and L. Cohen, <i>Geodesic "
        "Remeshing Using Front Propagation</i>, IJCV 2006, &sect;3.1&ndash;3.2.",
-       MeshFilterInterface::Remeshing, MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR, declareUniformRemesh,
-       applyUniformRemesh},
+       MeshFilterInterface::Remeshing, kWritesQualityAndColor, declareUniformRemesh, applyUniformRemesh},
       {kAdaptiveRemesh, "Remeshing: Geodesic Adaptive",
        "Remeshes the surface with a density that follows a per-vertex field: the field sets the front speed F of "
        "the fast marching, so farthest-point samples are spaced proportionally to F. The field is the vertex "
@@ -38,16 +40,14 @@ const std::vector<FilterSpec>& filterTable() {
        "a manifold, oriented mesh with the input's components, genus and boundary loops, on a new layer.<br>See "
        "G. Peyr&eacute; and L. Cohen, <i>Geodesic Remeshing Using Front Propagation</i>, IJCV 2006, "
        "&sect;3.3&ndash;3.4.",
-       MeshFilterInterface::Remeshing, MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR, declareAdaptiveRemesh,
-       applyAdaptiveRemesh},
+       MeshFilterInterface::Remeshing, kWritesQualityAndColor, declareAdaptiveRemesh, applyAdaptiveRemesh},
       {kTotalCurvature, "Compute Total Curvature (Normal Cycle) into Vertex Quality",
        "Computes the total curvature |k1|+|k2| of every vertex from the Cohen-Steiner&ndash;Morvan normal-cycle "
        "tensor averaged over a ball of the given radius, writes it into the vertex quality and colours the "
        "vertices by it. This is the field the adaptive remeshing uses for curvature; look at it before "
        "remeshing.<br>See D. Cohen-Steiner and J.-M. Morvan, <i>Restricted Delaunay triangulations and normal "
        "cycle</i>, SoCG 2003, and G. Peyr&eacute; and L. Cohen, IJCV 2006, &sect;3.4.",
-       MeshFilterInterface::FilterClass(MeshFilterInterface::Quality + MeshFilterInterface::VertexColoring),
-       MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR, declareTotalCurvature, applyTotalCurvature},
+       kQualityAndColorClass, kWritesQualityAndColor, declareTotalCurvature, applyTotalCurvature},
   };
   return table;
 }

@@ -4,31 +4,18 @@
 namespace gr::filters::param {
 
 // Geodesic Distance: Fast Marching from Selected Vertices
-constexpr const char* kUseQualityAsSpeed = "UseQualityAsSpeed";
-constexpr const char* kMaxDistance = "MaxDistance";
-constexpr const char* kColorBy = "ColorBy";
+constexpr const char *kUseQualityAsSpeed = "UseQualityAsSpeed", *kMaxDistance = "MaxDistance",
+                     *kColorBy = "ColorBy";
 
-}  // namespace gr::filters::param
-
-namespace gr::filters::param {
+// Both remeshing filters: the sampling
+constexpr const char *kTargetVertices = "TargetVertices", *kSpacing = "Spacing", *kSeed = "Seed",
+                     *kSubVertexPlacement = "SubVertexPlacement";
 
 // Remeshing: Geodesic Uniform
-constexpr const char* kTargetVertices = "TargetVertices";
-constexpr const char* kSpacing = "Spacing";
-constexpr const char* kSeed = "Seed";
-constexpr const char* kLabelInput = "LabelInput";
-constexpr const char* kRefinement = "Refinement";
-constexpr const char* kRelaxation = "Relaxation";
-constexpr const char* kSubVertexPlacement = "SubVertexPlacement";
+constexpr const char *kRefinement = "Refinement", *kRelaxation = "Relaxation", *kLabelInput = "LabelInput";
 
-}  // namespace gr::filters::param
-
-namespace gr::filters::param {
-
-// Remeshing: Geodesic Adaptive (plus TargetVertices, Spacing, Seed, SubVertexPlacement above)
-constexpr const char* kField = "Field";
-constexpr const char* kMapping = "Mapping";
-constexpr const char* kStrength = "Strength";
-constexpr const char* kCurvatureRadius = "CurvatureRadius";  // also: Compute Total Curvature
+// Remeshing: Geodesic Adaptive; CurvatureRadius also in Compute Total Curvature
+constexpr const char *kField = "Field", *kMapping = "Mapping", *kStrength = "Strength",
+                     *kCurvatureRadius = "CurvatureRadius";
 
 }  // namespace gr::filters::param

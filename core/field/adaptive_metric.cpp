@@ -34,12 +34,10 @@ Expected<std::vector<double>> fieldOf(const TriMesh& mesh, const std::vector<dou
 }  // namespace
 
 const char* toString(AdaptiveField field) {
-  switch (field) {
-    case AdaptiveField::VertexQuality: return "vertex quality";
-    case AdaptiveField::TotalCurvature: return "total curvature";
-    case AdaptiveField::ColorGradient: return "colour intensity gradient";
-  }
-  return "unknown field";
+  static const char* const kNames[kAdaptiveFieldCount] = {"vertex quality", "total curvature",
+                                                          "colour intensity gradient"};
+  const int i = static_cast<int>(field);
+  return i >= 0 && i < kAdaptiveFieldCount ? kNames[i] : "unknown field";
 }
 
 Expected<AdaptiveMetricResult> adaptiveMetric(const TriMesh& mesh, const std::vector<double>& values,

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/base/math.h"
+
 namespace gr {
 namespace {
 
@@ -30,7 +32,7 @@ double angleAt(const Vec3& p, const Vec3& q, const Vec3& r) {
   return std::atan2(u.cross(w).norm(), u.dot(w));
 }
 
-constexpr double kCapAngle = 179.0 * M_PI / 180.0;
+constexpr double kCapAngle = 179.0 * kPi / 180.0;
 
 /// Unit normal of (p, q, r), or zero when the triangle is too flat for its normal to mean
 /// anything: twice its area under 1e-4 times its squared longest edge (its largest angle within
@@ -53,8 +55,8 @@ DelaunayFlipResult flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& param
   std::vector<Tri>& tris = mesh.triangles;
   std::vector<int>& opp = mesh.oppositeCorner;
   const std::vector<Vec3>& pos = mesh.positions;
-  const double cosFeature = std::cos(params.featureAngleDegrees * M_PI / 180.0);
-  const double tolerance = params.toleranceDegrees * M_PI / 180.0;
+  const double cosFeature = std::cos(params.featureAngleDegrees * kPi / 180.0);
+  const double tolerance = params.toleranceDegrees * kPi / 180.0;
   const auto V = [&](int c) { return tris[c / 3][c % 3]; };
 
   // Work list of corners; each interior edge is checked from the corner of its lower-numbered side.
@@ -88,7 +90,7 @@ DelaunayFlipResult flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& param
     if (tolerance >= 0.0 && (pa - px).dot(pb - px) > 0.0 && (pb - py).dot(pa - py) > 0.0) continue;
     const double atX = angleAt(px, pa, pb), atY = angleAt(py, pb, pa);
     const double facing = atX + atY;
-    if (facing <= M_PI + tolerance) continue;  // locally Delaunay
+    if (facing <= kPi + tolerance) continue;  // locally Delaunay
     if (isNeighbour(mesh, c, y)) continue;  // (x, y) is already an edge
     // Feature and orientation checks: both old and new pairs nearly coplanar, same side up.
     const Vec3 n1 = unitNormal(px, pa, pb), n2 = unitNormal(py, pb, pa);

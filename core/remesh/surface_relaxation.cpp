@@ -7,10 +7,12 @@
 #include <limits>
 #include <string>
 
+#include "core/base/math.h"
+
 namespace gr {
 namespace {
 
-constexpr double kDegree = M_PI / 180.0;
+constexpr double kDegree = kPi / 180.0;
 
 /// Closest point of triangle (a, b, c) to p, as barycentric coordinates (Ericson, Real-Time
 /// Collision Detection, 5.1.5). A coordinate is exactly 0 when the point is on the opposite edge.
@@ -285,7 +287,7 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
       Vec3 bestTarget = here;
       for (const double step : {0.4, 0.2, 0.1})
         for (int k = 0; k < 8; ++k) {
-          const Vec3 target = here + step * ringLength * (std::cos(k * M_PI / 4) * e1 + std::sin(k * M_PI / 4) * e2);
+          const Vec3 target = here + step * ringLength * (std::cos(k * kPi / 4) * e1 + std::sin(k * kPi / 4) * e2);
           const SurfacePoint moved = walker.project(target, hereFace);
           const double s = ring(v, walker.pointOf(moved.face, moved.bary), nullptr);
           if (s > best) {

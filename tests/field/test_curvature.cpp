@@ -16,6 +16,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
+#include "core/base/math.h"
 #include "core/field/curvature.h"
 #include "tests/support/test_support.h"
 
@@ -64,7 +65,7 @@ TriMesh torus(int nU, int nV, double big, double small) {
   std::vector<Tri> tris;
   for (int j = 0; j < nV; ++j)
     for (int i = 0; i < nU; ++i) {
-      const double u = 2 * M_PI * i / nU, v = 2 * M_PI * j / nV;
+      const double u = 2 * kPi * i / nU, v = 2 * kPi * j / nV;
       pos.emplace_back((big + small * std::cos(v)) * std::cos(u), (big + small * std::cos(v)) * std::sin(u),
                        small * std::sin(v));
     }
@@ -105,7 +106,7 @@ TEST(Curvature, SphereHasTotalCurvatureTwoOverR) {
 TEST(Curvature, CylinderHasTotalCurvatureOneOverRAwayFromItsRims) {
   const double R = 1.5, height = 4.0;
   const int nTheta = 64;
-  const int nZ = static_cast<int>(std::lround(height / (2 * M_PI * R / nTheta)));
+  const int nZ = static_cast<int>(std::lround(height / (2 * kPi * R / nTheta)));
   const TriMesh m = test::cylinder(nTheta, nZ, R, height);
   const double h = m.meanEdgeLength();
   for (double radiusInEdges : {kOneRing, 1.0, 2.0, 3.0}) {
@@ -139,7 +140,7 @@ TEST(Curvature, TorusSaddlesHaveSignedCurvatures) {
     const CurvatureResult c = curvatureOf(m, radiusInEdges * h);
     double worstTau = 0.0, worstK1 = 0.0, worstK2 = 0.0;
     for (int v = 0; v < m.vertexCount(); ++v) {
-      const double angle = 2 * M_PI * (v / nU) / nV;
+      const double angle = 2 * kPi * (v / nU) / nV;
       const double across = 1.0 / a, along = std::cos(angle) / (b + a * std::cos(angle));
       const double tau = std::abs(across) + std::abs(along);
       worstTau = std::max(worstTau, std::abs(c.tau[v] - tau) / tau);
@@ -174,7 +175,7 @@ TEST(Curvature, HingeByHand) {
   //   a = 0, b = 1 on the x axis; c = 2 in the plane z = 0; d = 3 in the plane y = 0.
   const std::vector<Vec3> pos = {{0, 0, 0}, {2, 0, 0}, {0.5, 1, 0}, {1.5, 0, 1.5}};
   const TriMesh m = std::move(buildTriMesh(pos, {{0, 1, 2}, {1, 0, 3}})).value();
-  const double expected = (M_PI / 2) * 2.0 / (1.0 + 1.5);
+  const double expected = (kPi / 2) * 2.0 / (1.0 + 1.5);
   const CurvatureResult c = curvatureOf(m, 10.0);
   for (int v = 0; v < 4; ++v) {
     EXPECT_NEAR(c.tau[v], expected, 1e-7 * expected);  // closed-form eigenvalues: ~1e-8 (header)
@@ -205,7 +206,7 @@ std::set<int> sharpEdgeVertices(const TriMesh& m, double degrees, int* edgeCount
   };
   std::set<int> vertices;
   *edgeCount = 0;
-  const double cosLimit = std::cos(degrees * M_PI / 180.0);
+  const double cosLimit = std::cos(degrees * kPi / 180.0);
   for (const auto& [edge, faces] : facesOfEdge) {
     if (faces.size() != 2) continue;
     if (normal(faces[0]).dot(normal(faces[1])) < cosLimit) {

@@ -17,6 +17,7 @@
 #include <common/GLLogStream.h>
 #include <common/meshmodel.h>
 
+#include "core/base/math.h"
 #include "core/geodesic/fast_marching.h"
 #include "core/mesh/vcg_mesh.h"
 #include "core/remesh/remesh_surface.h"
@@ -468,7 +469,7 @@ std::vector<char> onSharpEdges(const TriMesh& m) {
   };
   for (int c = 0; c < 3 * m.faceCount(); ++c) {
     const int o = m.oppositeCorner[c];
-    if (o < 0 || normal(TriMesh::face(c)).dot(normal(TriMesh::face(o))) > std::cos(60.0 * M_PI / 180.0)) continue;
+    if (o < 0 || normal(TriMesh::face(c)).dot(normal(TriMesh::face(o))) > std::cos(60.0 * kPi / 180.0)) continue;
     sharp[m.vertex(TriMesh::next(c))] = sharp[m.vertex(TriMesh::prev(c))] = 1;
   }
   return sharp;

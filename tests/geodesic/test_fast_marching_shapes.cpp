@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/base/math.h"
 #include "core/geodesic/fast_marching.h"
 #include "tests/support/test_support.h"
 
@@ -47,10 +48,10 @@ TEST(FastMarchingShapes, CylinderMatchesUnrolledDistance) {
     const auto exact = [&](int v) {
       const Vec3& p = m.positions[v];
       double dtheta = std::abs(std::atan2(p.y(), p.x()) - std::atan2(s.y(), s.x()));
-      dtheta = std::min(dtheta, 2 * M_PI - dtheta);
+      dtheta = std::min(dtheta, 2 * kPi - dtheta);
       return std::hypot(R * dtheta, p.z() - s.z());
     };
-    const MeanMax e = compare(m, r->distance, exact, 0.05 * M_PI * R);
+    const MeanMax e = compare(m, r->distance, exact, 0.05 * kPi * R);
     std::printf("cylinder %3d x %3d: mean relative error %.4f %%, max abs %.4f h\n", n, n / 2, 100 * e.meanRelative,
                 e.maxAbs / m.meanEdgeLength());
     EXPECT_LT(e.meanRelative, previous) << "no convergence under refinement";
@@ -71,7 +72,7 @@ TEST(FastMarchingShapes, UvSphereMatchesGreatCircles) {
     ASSERT_TRUE(r);
     const Vec3 s = m.positions[source];
     const auto exact = [&](int v) { return std::acos(std::clamp(m.positions[v].dot(s), -1.0, 1.0)); };
-    const MeanMax e = compare(m, r->distance, exact, 0.05 * M_PI);
+    const MeanMax e = compare(m, r->distance, exact, 0.05 * kPi);
     std::printf("UV sphere %3d x %3d: mean relative error %.4f %%, max abs %.4f h\n", n, 2 * n, 100 * e.meanRelative,
                 e.maxAbs / m.meanEdgeLength());
     EXPECT_LT(e.meanRelative, previous);
@@ -138,7 +139,7 @@ double largestAngleDegrees(const TriMesh& m) {
   for (const Tri& t : m.triangles)
     for (int k = 0; k < 3; ++k) {
       const Vec3 u = m.positions[t[(k + 1) % 3]] - m.positions[t[k]], w = m.positions[t[(k + 2) % 3]] - m.positions[t[k]];
-      largest = std::max(largest, std::acos(std::clamp(u.dot(w) / (u.norm() * w.norm()), -1.0, 1.0)) * 180.0 / M_PI);
+      largest = std::max(largest, std::acos(std::clamp(u.dot(w) / (u.norm() * w.norm()), -1.0, 1.0)) * 180.0 / kPi);
     }
   return largest;
 }

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "core/base/math.h"
 #include "core/mesh/tri_mesh.h"
 #include "tests/support/test_support.h"
 
@@ -303,7 +304,7 @@ void fan(int k, bool closed, double apexHeight, std::vector<Vec3>& p, std::vecto
          const Vec3& centre = Vec3::Zero()) {
   p.push_back(centre + Vec3(0, 0, apexHeight));
   for (int i = 0; i < k; ++i) {
-    const double a = 2 * M_PI * i / k;
+    const double a = 2 * kPi * i / k;
     p.push_back(centre + Vec3(std::cos(a), std::sin(a), 0));
   }
   const int faces = closed ? k : k - 1;
@@ -316,7 +317,7 @@ TriMesh torus(int m, int n, double R = 2.0, double r = 0.7) {
   std::vector<Tri> t;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < m; ++i) {
-      const double u = 2 * M_PI * i / m, v = 2 * M_PI * j / n;
+      const double u = 2 * kPi * i / m, v = 2 * kPi * j / n;
       p.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
     }
   auto id = [m, n](int i, int j) { return (j % n) * m + (i % m); };
@@ -410,7 +411,7 @@ TEST(TriMeshFixtures, OpenCone) {
   EXPECT_EQ(m.topology.eulerCharacteristic, 1);
   EXPECT_TRUE(m.topology.isManifold());
   // Slant edge sqrt(1 + 1.5^2) (8 spokes, each in two faces) and rim chord 2 sin(pi/8) (8 edges).
-  const double slant = std::sqrt(1 + 1.5 * 1.5), chord = 2 * std::sin(M_PI / 8);
+  const double slant = std::sqrt(1 + 1.5 * 1.5), chord = 2 * std::sin(kPi / 8);
   EXPECT_NEAR(m.meanEdgeLength(), (16 * slant + 8 * chord) / 24.0, 1e-12);
   expectValid(m);
 }

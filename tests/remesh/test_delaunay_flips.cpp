@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <random>
 
+#include "core/base/math.h"
 #include "core/remesh/delaunay_flips.h"
 #include "core/measure/evaluation.h"
 #include "tests/support/test_support.h"
@@ -171,7 +172,7 @@ double largestAngleDegrees(const TriMesh& m) {
   for (const Tri& t : m.triangles)
     for (int k = 0; k < 3; ++k) {
       const Vec3 u = m.positions[t[(k + 1) % 3]] - m.positions[t[k]], w = m.positions[t[(k + 2) % 3]] - m.positions[t[k]];
-      largest = std::max(largest, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI);
+      largest = std::max(largest, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / kPi);
     }
   return largest;
 }

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/base/math.h"
 #include "core/measure/evaluation.h"
 #include "core/geodesic/farthest_point_sampling.h"
 #include "core/remesh/geodesic_delaunay.h"
@@ -115,7 +116,7 @@ TEST(SurfaceRelaxation, CreaseAndCornerVerticesDoNotMove) {
         const Tri& t = input.triangles[f];
         return Vec3((input.positions[t[1]] - input.positions[t[0]]).cross(input.positions[t[2]] - input.positions[t[0]]).normalized());
       };
-      sharp |= o < 0 || normal(*c / 3).dot(normal(o / 3)) < std::cos(60.0 * M_PI / 180.0);
+      sharp |= o < 0 || normal(*c / 3).dot(normal(o / 3)) < std::cos(60.0 * kPi / 180.0);
     }
     if (sharp) onCrease.push_back(v);
   }

@@ -12,6 +12,7 @@
 #include <set>
 #include <random>
 
+#include "core/base/math.h"
 #include "core/mesh/vcg_mesh.h"
 
 namespace gr::test {
@@ -116,7 +117,7 @@ TriMesh cylinder(int nTheta, int nZ, double r, double h) {
   std::vector<Tri> tris;
   for (int j = 0; j <= nZ; ++j)
     for (int i = 0; i < nTheta; ++i) {
-      const double t = 2.0 * M_PI * i / nTheta;
+      const double t = 2.0 * kPi * i / nTheta;
       pos.emplace_back(r * std::cos(t), r * std::sin(t), h * j / nZ);
     }
   auto id = [nTheta](int i, int j) { return j * nTheta + (i % nTheta); };
@@ -131,7 +132,7 @@ TriMesh cylinder(int nTheta, int nZ, double r, double h) {
 TriMesh moebiusStrip(int n) {
   std::vector<Vec3> pos;
   for (int i = 0; i < n; ++i) {
-    const double t = 2 * M_PI * i / n, half = t / 2;
+    const double t = 2 * kPi * i / n, half = t / 2;
     const Vec3 centre(std::cos(t), std::sin(t), 0.0);
     const Vec3 across = 0.3 * (std::cos(half) * Vec3(std::cos(t), std::sin(t), 0.0) + std::sin(half) * Vec3(0, 0, 1));
     pos.push_back(centre - across);
@@ -154,7 +155,7 @@ TriMesh uvSphere(int nLat, int nLon, double r) {
   pos.emplace_back(0, 0, r);  // north pole: 0
   for (int j = 1; j < nLat; ++j)
     for (int i = 0; i < nLon; ++i) {
-      const double th = M_PI * j / nLat, ph = 2.0 * M_PI * i / nLon;
+      const double th = kPi * j / nLat, ph = 2.0 * kPi * i / nLon;
       pos.emplace_back(r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph), r * std::cos(th));
     }
   pos.emplace_back(0, 0, -r);  // south pole
@@ -313,7 +314,7 @@ AngleRecount recountAngles(const TriMesh& mesh) {
     for (int k = 0; k < 3; ++k) {
       const Vec3 u = mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]];
       const Vec3 w = mesh.positions[t[(k + 2) % 3]] - mesh.positions[t[k]];
-      minAngle = std::min(minAngle, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI);
+      minAngle = std::min(minAngle, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / kPi);
     }
     r.smallestDegrees = std::min(r.smallestDegrees, minAngle);
     below30 += minAngle < 30.0;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/base/math.h"
 #include "core/geodesic/detail/unfold.h"
 
 namespace gr {
@@ -23,7 +24,7 @@ bool findSplit(const TriMesh& m, int c, int maxUnfoldings, AcuteSplit& out) {
   const double cosTheta = (m.positions[a] - px).dot(m.positions[b] - px) / (la * lb);
   if (!(cosTheta < 0.0)) return false;
   const double theta = std::acos(std::max(-1.0, cosTheta));
-  const double halfPi = 0.5 * M_PI;
+  const double halfPi = 0.5 * kPi;
   const Vec2 pa(la, 0.0), pb(lb * std::cos(theta), lb * std::sin(theta));
 
   // The current edge (p: A side of the bisector, q: B side) and the corner facing it.

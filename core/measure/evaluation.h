@@ -36,10 +36,9 @@ AngleStatistics angleStatistics(const TriMesh& mesh);
 /// and face centroids of `from` (each to its nearest point of `to`, found with vcglib's grid).
 /// The samples are measured in fixed blocks on all hardware threads (up to `maxThreads`; 0 = as
 /// many as the machine has) and the blocks combined in order, so the result does not depend on
-/// the thread count. Cost: O(V + F) queries of about 1-5 us each; 15 million for a 1.66M-vertex
-/// input against its 104k remesh, plus 0.6 million the other way (8.9 s both ways on 2 threads;
-/// 31 s on one with vcglib's default grid). `progress` is reported from the calling thread
-/// only; if it cancels, the result is marked incomplete.
+/// the thread count. Cost: O(V + F) nearest-point queries on a grid of 16 cells per face of `to`
+/// (times: docs/BENCHMARKS.md). `progress` is reported from the calling thread only; if it
+/// cancels, the result is marked incomplete.
 struct SurfaceDistance {
   double max = 0.0;  ///< one-sided Hausdorff distance
   double rms = 0.0;  ///< root mean square over the samples

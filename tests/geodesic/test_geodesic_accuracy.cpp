@@ -103,34 +103,10 @@ TEST(BadTriangles, NeedlesAndZeroAreaFacesStayWithinTwiceTheGoodError) {
 
 // Meshes of the data set that come with slivers (angles down to 0.03 degree) and angles above
 // 150 degrees: finite, monotone, complete; error within 2x of the mean error on the good meshes
-// (fandisk, bunny00, armadillo), and well ahead of Dijkstra. Known exception, measured and kept
-// visible here: cheese.off (genus 133, long slivers across flat CAD faces) stays near 5% (vcglib
-// 4.5%, Dijkstra 15%); one midpoint subdivision of the same surface only brings it to 4.2%, so
-// it is not plain resolution. It is held to the Dijkstra bound only. Measured further: 43% of its
-// faces have an angle under 5 degrees, the error is an overestimate almost everywhere (96% of the
-// vertices, median +5%), and Delaunay edge flips restricted to flat regions (delaunay_flips.h,
-// feature angle 0.01-2 degrees: about 1,000-1,300 flips) leave it at 4.94-4.96%: the slivers are
-// in the point set itself (holes in flat faces with vertices only on their rims), so a fix needs
-// new points (intrinsic Delaunay refinement) or wavefront tracking, not a better triangulation.
-// Also measured (not kept): longer acute-split searches (12 -> 200 unfoldings: 4.89%); seeding
-// straight-line values from every saddle vertex (angle sum over 2 pi + 5 deg) as it is accepted,
-// through the unfolded faces its straight lines can reach: 3.0% (2 rings), 1.76% (6), 1.09% (20),
-// 0.99% (60 rings, 13 s for this 5k-vertex mesh). The error is the far field of the pseudo-sources
-// at the saddle vertices of the holes' rims across the long slivers, and even exact straight
-// lines from them over 20 rings cost 20x the propagation and stay above the 2x bound.
-// Measured in the fifth session: 7,962 of its 8,629 vertices are saddles (angle sum above 2 pi)
-// and the error is 3-5% already over the nearest tenth of the distance range; splitting every
-// edge longer than the median edge (the same surface, 36,039 vertices) gives 3.84%, longer than
-// half of it (104,331 vertices) 2.11%; carrying a pseudo-source offset per vertex (the value at
-// the vertex an edge update came from, so triangle updates measure circles around it) gives
-// 4.98% (mixed offsets solved without), 4.17% (with the smaller) or 9.45% (with the larger).
-// Measured in the sixth session: the same surface remeshed by CGAL's isotropic_remeshing (3
-// iterations, smallest angles 11.4 and 15.1 degrees instead of 0.2) at 9,125 and 35,060 vertices
-// gives 1.31% and 1.22% (vcglib 1.31% and 1.23%, Dijkstra 5.9% and 5.5%), while the same remeshing
-// of fandisk (7,049 vertices) and bunny00 (41,509) gives 0.27% and 0.16%. Good triangles remove
-// most of cheese's error but leave it at twice the bound, and refinement barely lowers it: the
-// rest is the surface (geodesics bent around the saddle rims of 133 holes), which first-order
-// local updates do not follow; the bound needs exact wavefront (window) propagation.
+// (fandisk, bunny00, armadillo), and well ahead of Dijkstra.
+// Known limitation (issue 17): cheese.off (genus 133, holes in flat faces with vertices only on
+// their rims) stays near 5%, held to the Dijkstra bound only: first-order local updates do not
+// follow geodesics bent around its saddle rims; the fix is new points or window propagation.
 TEST(BadTriangles, DataSetSliverMeshes) {
   double goodSum = 0.0;
   for (const char* name : {"fandisk.off", "bunny00.off", "armadillo.off"}) {

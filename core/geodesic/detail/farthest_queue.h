@@ -7,8 +7,8 @@
 // highest bucket with entries, drops the stale ones and returns its largest current value.
 //
 // Why not a binary heap with decrease-key: in sampling every vertex a new front improves moves
-// from near the top of a max-heap to near its bottom, ~log V levels of cache misses (11% of the
-// sampling time on a 1.66M-vertex mesh); here it is one append. Because U only decreases, the
+// from near the top of a max-heap to near its bottom, ~log V levels of cache misses; here it is
+// one append. Because U only decreases, the
 // highest non-empty bucket only moves down, so the empty buckets above it are never revisited.
 // Cost: O(1) per update; top() is linear in the top bucket (a few vertices: those within 2^-kSubBits
 // of the largest U). Memory: one int per update, compacted when stale entries dominate.

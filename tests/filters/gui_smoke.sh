@@ -7,6 +7,7 @@ stage=$1
 mesh=$2
 shot=$3
 plugin="$stage/lib/x86_64-linux-gnu/meshlab/plugins/libfilter_geodesic_remesh.so"
+mkdir -p "$(dirname "$shot")"
 rm -f "$shot"
 inner=$(mktemp)
 cat >"$inner" <<'INNER'

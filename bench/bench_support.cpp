@@ -1,7 +1,5 @@
 #include "bench/bench_support.h"
 
-#include <time.h>
-
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -15,12 +13,6 @@
 #include "core/mesh/vcg_mesh.h"
 
 namespace gr::bench {
-
-double cpuSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 Expected<TriMesh> loadBenchMesh(const std::string& file, int subdivisions) {
   Expected<TriMesh> m = loadTriMesh(std::string(GR_MESH_DIR) + "/" + file);

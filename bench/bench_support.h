@@ -1,4 +1,4 @@
-// What the benchmarks share: thread CPU time, the test meshes (optionally subdivided), CGAL's
+// What the benchmarks share: the test meshes (optionally subdivided), CGAL's
 // Surface_mesh to and from a TriMesh, CGAL's isotropic remeshing, and the surface distance both
 // ways. Never timed themselves unless a benchmark says so.
 #pragma once
@@ -19,10 +19,6 @@ namespace gr::bench {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using SmVertex = SurfaceMesh::Vertex_index;
-
-/// CPU time of the whole process, all its threads, in seconds: what the code costs on one core
-/// (the machine may be shared, so not wall time; the engine's constructor runs a helper thread).
-double cpuSeconds();
 
 /// A mesh of GR_MESH_DIR ("bunny00.off"), after `subdivisions` 1-to-4 midpoint subdivisions.
 Expected<TriMesh> loadBenchMesh(const std::string& file, int subdivisions = 0);

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <string>
 
+#include "core/mesh/face_geometry.h"
+
 namespace gr {
 
 double rgbIntensity(double red, double green, double blue) { return 0.299 * red + 0.587 * green + 0.114 * blue; }
@@ -25,7 +27,7 @@ Expected<GradientResult> gradientMagnitude(const TriMesh& mesh, const std::vecto
     const Vec3& p0 = mesh.positions[t[0]];
     const Vec3& p1 = mesh.positions[t[1]];
     const Vec3& p2 = mesh.positions[t[2]];
-    const double twiceArea = (p1 - p0).cross(p2 - p0).norm();
+    const double twiceArea = areaNormal(mesh, t).norm();
     if (!(twiceArea > 0.0)) {
       ++result.zeroAreaFaces;
       continue;

@@ -94,15 +94,6 @@ void rebuildVertexCorners(TriMesh& mesh);
 /// contiguously instead of through one triangle per corner (random reads on large meshes).
 std::vector<std::array<int, 2>> starNeighbours(const TriMesh& mesh);
 
-/// The same mesh with its faces oriented coherently: across every manifold edge the two faces
-/// run the edge in opposite directions. In each component the orientation most faces already
-/// have is kept; a face is flipped by swapping its corners 1 and 2 (so a point with barycentric
-/// coordinates (b0, b1, b2) in the flipped face has (b0, b2, b1) in the original), and
-/// `flipped` (optional) receives one flag per face. Fails (InvalidInput) on a non-orientable
-/// component (a Moebius strip, a Klein bottle) and (NonManifold) on non-manifold edges.
-/// Cost: O(F).
-Expected<TriMesh> orientCoherently(const TriMesh& mesh, std::vector<char>* flipped = nullptr);
-
 /// Faces whose vertices lie in the given component.
 std::vector<int> facesOfComponent(const TriMesh& mesh, int component);
 

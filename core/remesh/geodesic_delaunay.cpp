@@ -10,6 +10,7 @@
 
 #include "core/remesh/delaunay_flips.h"
 #include "core/geodesic/fast_marching.h"
+#include "core/mesh/face_geometry.h"
 
 namespace gr {
 namespace {
@@ -96,7 +97,7 @@ Status checkInput(const TriMesh& mesh, const std::vector<SurfacePoint>& samples)
   for (const Tri& t : mesh.triangles) {
     const int c = mesh.topology.componentOfVertex[t[0]];
     if (c >= 0)
-      area[c] += (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm();
+      area[c] += areaNormal(mesh, t).norm();
   }
   for (size_t c = 0; c < area.size(); ++c)
     if (!(area[c] > 0.0))

@@ -57,7 +57,7 @@ struct DelaunayResult {
 };
 
 /// Fails with InvalidInput (no samples, a sample out of range, a non-manifold mesh, faces not oriented
-/// coherently: see orientCoherently in tri_mesh.h, a component of zero area),
+/// coherently: see orientCoherently in mesh/orientation.h, a component of zero area),
 /// NotConverged (still invalid after maxRepairRounds) or Cancelled.
 Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> samples,
                                           const DelaunayParams& params = {}, Progress progress = {});

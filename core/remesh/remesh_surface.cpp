@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/geodesic/fast_marching.h"
+#include "core/mesh/orientation.h"
 #include "core/mesh/subdivide.h"
 
 namespace gr {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/base/math.h"
+#include "core/mesh/face_geometry.h"
 
 namespace gr {
 namespace {
@@ -57,7 +58,7 @@ class SurfaceWalker {
 
   /// Unit normal of an input face (zero for a degenerate face).
   Vec3 normal(int face) const {
-    const Vec3 n = areaNormal(face);
+    const Vec3 n = areaNormal(mesh_, face);
     const double len = n.norm();
     return len > 0 ? Vec3(n / len) : Vec3::Zero();
   }
@@ -151,7 +152,7 @@ class SurfaceWalker {
   bool computeBlocked(int corner) const {
     const int o = mesh_.oppositeCorner[corner];
     if (o < 0) return true;
-    const Vec3 a = areaNormal(TriMesh::face(corner)), b = areaNormal(TriMesh::face(o));
+    const Vec3 a = areaNormal(mesh_, TriMesh::face(corner)), b = areaNormal(mesh_, TriMesh::face(o));
     return !(a.dot(b) > cosFeature_ * std::sqrt(a.squaredNorm() * b.squaredNorm()));  // also if degenerate
   }
 
@@ -159,11 +160,6 @@ class SurfaceWalker {
   double cosFeature_;
   mutable std::vector<signed char> blocked_;  ///< per input corner: -1 not computed yet, else 0 / 1
 
-  /// Cross product of two edges of the face: normal times twice the area.
-  Vec3 areaNormal(int face) const {
-    const Tri& t = mesh_.triangles[face];
-    return (mesh_.positions[t[1]] - mesh_.positions[t[0]]).cross(mesh_.positions[t[2]] - mesh_.positions[t[0]]);
-  }
 };
 
 /// Cosine of the smallest angle of triangle (p, q, r): the angle facing the shortest edge.

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/base/math.h"
+#include "core/mesh/orientation.h"
 #include "core/mesh/tri_mesh.h"
 #include "tests/support/test_support.h"
 

@@ -210,7 +210,11 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
           r.origin = samples;
           r.cell = label;
         }
-        if (params.delaunayFlips) r.flippedEdges = flipToDelaunay(*out, params.flips).flips;
+        if (params.delaunayFlips) {
+          Expected<DelaunayFlipResult> flipped = flipToDelaunay(*out, params.flips);
+          if (!flipped) return flipped.status();
+          r.flippedEdges = flipped->flips;
+        }
         r.mesh = std::move(out).value();
         r.addedSamples = cells - initialCount;
         r.repairRounds = round;

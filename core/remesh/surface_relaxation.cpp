@@ -294,7 +294,10 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
       if (best > smallest)
         tryMove(v, bestTarget, hereFace, smallest, smallest, std::numeric_limits<double>::infinity());
     }
-    r.flips += flipToDelaunay(output, params.flips).flips;
+    // The output is manifold and oriented (checked above), and moves keep that.
+    Expected<DelaunayFlipResult> flipped = flipToDelaunay(output, params.flips);
+    if (!flipped) return flipped.status();
+    r.flips += flipped->flips;
     ++r.iterations;
   }
   return r;

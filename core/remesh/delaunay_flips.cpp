@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "core/base/math.h"
 
@@ -47,85 +49,134 @@ Vec3 unitNormal(const Vec3& p, const Vec3& q, const Vec3& r) {
   return len > 1e-4 * scale ? Vec3(n / len) : Vec3::Zero();
 }
 
-}  // namespace
+/// Refuses what the flips cannot work on: no faces, a non-manifold mesh, faces not oriented alike.
+Status checkFlipInput(const TriMesh& mesh) {
+  if (mesh.faceCount() == 0) return invalidInput("Delaunay flips: the mesh has no faces");
+  if (!mesh.topology.isManifold())
+    return nonManifold("Delaunay flips need a manifold mesh; this one has " +
+                       std::to_string(mesh.topology.nonManifoldEdges) + " non-manifold edges and " +
+                       std::to_string(mesh.topology.nonManifoldVertices) + " non-manifold vertices");
+  if (mesh.topology.inconsistentEdges > 0)
+    return invalidInput("Delaunay flips: the faces are not oriented coherently (" +
+                        std::to_string(mesh.topology.inconsistentEdges) +
+                        " edges have two faces that disagree): orient them first (orientCoherently)");
+  return Status::ok();
+}
 
-DelaunayFlipResult flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& params) {
-  DelaunayFlipResult r;
-  if (!mesh.topology.isManifold() || mesh.topology.inconsistentEdges > 0 || mesh.faceCount() == 0) return r;
+/// Work list of the interior edges to check, each as the corner of its lower-numbered side.
+class EdgeQueue {
+ public:
+  /// Every interior edge of the mesh, in corner order.
+  explicit EdgeQueue(const TriMesh& mesh) : opp_(mesh.oppositeCorner), queued_(3 * mesh.triangles.size(), 0) {
+    for (int c = 0; c < 3 * mesh.faceCount(); ++c)
+      if (opp_[c] >= 0 && c < opp_[c]) {
+        work_.push_back(c);
+        queued_[c] = 1;
+      }
+  }
+  bool empty() const { return work_.empty(); }
+  /// The edge checked next (the last queued).
+  int pop() {
+    const int c = work_.back();
+    work_.pop_back();
+    queued_[c] = 0;
+    return c;
+  }
+  /// Queues the edge facing corner c, unless it is a boundary or already queued.
+  void push(int c) {
+    if (opp_[c] < 0) return;
+    const int k = std::min(c, opp_[c]);
+    if (!queued_[k]) {
+      queued_[k] = 1;
+      work_.push_back(k);
+    }
+  }
+
+ private:
+  const std::vector<int>& opp_;  ///< the mesh's opposite corners, kept up to date by the flips
+  std::vector<int> work_;
+  std::vector<char> queued_;
+};
+
+/// Whether the interior edge facing corner c (o on the other side) should be flipped: not locally
+/// Delaunay, the new diagonal not an edge yet, no crease cut, both new faces the same side up, and
+/// the flip lowers the facing angles' sum.
+bool shouldFlip(const TriMesh& mesh, int c, int o, double cosFeature, double tolerance) {
+  const std::vector<Tri>& tris = mesh.triangles;
+  const std::vector<Vec3>& pos = mesh.positions;
+  const auto V = [&](int k) { return tris[k / 3][k % 3]; };
+  // Faces (x, a, b) and (y, b, a) share the edge (a, b); x faces it in one, y in the other.
+  const int x = V(c), a = V(TriMesh::next(c)), b = V(TriMesh::prev(c)), y = V(o);
+  if (x == y) return false;
+  const Vec3 &px = pos[x], &pa = pos[a], &pb = pos[b], &py = pos[y];
+  // Two acute facing angles sum to less than pi: locally Delaunay without the arc tangents.
+  if (tolerance >= 0.0 && (pa - px).dot(pb - px) > 0.0 && (pb - py).dot(pa - py) > 0.0) return false;
+  const double atX = angleAt(px, pa, pb), atY = angleAt(py, pb, pa);
+  const double facing = atX + atY;
+  if (facing <= kPi + tolerance) return false;  // locally Delaunay
+  if (isNeighbour(mesh, c, y)) return false;  // (x, y) is already an edge
+  // Feature and orientation checks: both old and new pairs nearly coplanar, same side up.
+  const Vec3 n1 = unitNormal(px, pa, pb), n2 = unitNormal(py, pb, pa);
+  const Vec3 m1 = unitNormal(px, pa, py), m2 = unitNormal(px, py, pb);
+  if (m1.isZero() || m2.isZero()) return false;
+  if (m1.dot(m2) < cosFeature) return false;
+  // A cap (x, or y, within a degree of the line through a and b) is no feature: flipping it
+  // away moves the surface by less than its own height, and its normal only says on which
+  // side of the line rounding or a crease put x.
+  const bool cap = atX > kCapAngle || atY > kCapAngle;
+  if (!cap && !n1.isZero() && !n2.isZero() && n1.dot(n2) < cosFeature) return false;
+  const Vec3 before = (pa - px).cross(pb - px) + (pb - py).cross(pa - py);
+  if (m1.dot(before) <= 0.0 || m2.dot(before) <= 0.0) return false;
+  // The flip must make the edge Delaunay: the new facing angles (at a and b) sum to less.
+  return !(angleAt(pa, py, px) + angleAt(pb, px, py) >= facing - tolerance);
+}
+
+/// Flips the edge facing corner c (o on the other side): faces (x, a, b), (y, b, a) become
+/// (x, a, y), (y, b, x) in place, with their opposite corners relinked.
+void flipEdge(TriMesh& mesh, int c, int o) {
   std::vector<Tri>& tris = mesh.triangles;
   std::vector<int>& opp = mesh.oppositeCorner;
-  const std::vector<Vec3>& pos = mesh.positions;
+  const auto V = [&](int k) { return tris[k / 3][k % 3]; };
+  const int x = V(c), a = V(TriMesh::next(c)), b = V(TriMesh::prev(c)), y = V(o);
+  // Outer corners: the ones facing x->a (corner of b in f), b->x (a in f), a->y (b in g), y->b (a in g).
+  const int f = c / 3, g = o / 3;
+  const int oXA = opp[TriMesh::prev(c)], oBX = opp[TriMesh::next(c)];
+  const int oAY = opp[TriMesh::next(o)], oYB = opp[TriMesh::prev(o)];
+  // New faces: f = (x, a, y), g = (y, b, x).
+  tris[f] = {x, a, y};
+  tris[g] = {y, b, x};
+  const int f0 = 3 * f, g0 = 3 * g;
+  const auto link = [&](int corner, int other) {
+    opp[corner] = other;
+    if (other >= 0) opp[other] = corner;
+  };
+  link(f0 + 0, oAY);     // x faces a->y
+  link(f0 + 1, g0 + 1);  // a and b face the new diagonal
+  link(f0 + 2, oXA);     // y faces x->a
+  link(g0 + 0, oBX);     // y faces b->x
+  link(g0 + 2, oYB);     // x faces y->b
+}
+
+}  // namespace
+
+Expected<DelaunayFlipResult> flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& params) {
+  if (Status s = checkFlipInput(mesh); !s) return s;
+  DelaunayFlipResult r;
+  const std::vector<int>& opp = mesh.oppositeCorner;
   const double cosFeature = std::cos(params.featureAngleDegrees * kPi / 180.0);
   const double tolerance = params.toleranceDegrees * kPi / 180.0;
-  const auto V = [&](int c) { return tris[c / 3][c % 3]; };
-
-  // Work list of corners; each interior edge is checked from the corner of its lower-numbered side.
-  std::vector<int> work;
-  std::vector<char> queued(3 * tris.size(), 0);
-  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
-    if (opp[c] >= 0 && c < opp[c]) {
-      work.push_back(c);
-      queued[c] = 1;
-    }
-  const auto enqueue = [&](int c) {
-    if (opp[c] < 0) return;
-    const int k = std::min(c, opp[c]);
-    if (!queued[k]) {
-      queued[k] = 1;
-      work.push_back(k);
-    }
-  };
+  EdgeQueue work(mesh);
   const long maxFlips = long(params.maxFlipsPerFace) * mesh.faceCount();
   while (!work.empty() && r.flips < maxFlips) {
-    const int c = work.back();
-    work.pop_back();
-    queued[c] = 0;
+    const int c = work.pop();
     const int o = opp[c];
     if (o < 0) continue;
-    // Faces (x, a, b) and (y, b, a) share the edge (a, b); x faces it in one, y in the other.
-    const int x = V(c), a = V(TriMesh::next(c)), b = V(TriMesh::prev(c)), y = V(o);
-    if (x == y) continue;
-    const Vec3 &px = pos[x], &pa = pos[a], &pb = pos[b], &py = pos[y];
-    // Two acute facing angles sum to less than pi: locally Delaunay without the arc tangents.
-    if (tolerance >= 0.0 && (pa - px).dot(pb - px) > 0.0 && (pb - py).dot(pa - py) > 0.0) continue;
-    const double atX = angleAt(px, pa, pb), atY = angleAt(py, pb, pa);
-    const double facing = atX + atY;
-    if (facing <= kPi + tolerance) continue;  // locally Delaunay
-    if (isNeighbour(mesh, c, y)) continue;  // (x, y) is already an edge
-    // Feature and orientation checks: both old and new pairs nearly coplanar, same side up.
-    const Vec3 n1 = unitNormal(px, pa, pb), n2 = unitNormal(py, pb, pa);
-    const Vec3 m1 = unitNormal(px, pa, py), m2 = unitNormal(px, py, pb);
-    if (m1.isZero() || m2.isZero()) continue;
-    if (m1.dot(m2) < cosFeature) continue;
-    // A cap (x, or y, within a degree of the line through a and b) is no feature: flipping it
-    // away moves the surface by less than its own height, and its normal only says on which
-    // side of the line rounding or a crease put x.
-    const bool cap = atX > kCapAngle || atY > kCapAngle;
-    if (!cap && !n1.isZero() && !n2.isZero() && n1.dot(n2) < cosFeature) continue;
-    const Vec3 before = (pa - px).cross(pb - px) + (pb - py).cross(pa - py);
-    if (m1.dot(before) <= 0.0 || m2.dot(before) <= 0.0) continue;
-    // The flip must make the edge Delaunay: the new facing angles (at a and b) sum to less.
-    if (angleAt(pa, py, px) + angleAt(pb, px, py) >= facing - tolerance) continue;
-
-    // Outer corners: the ones facing x->a (corner of b in f), b->x (a in f), a->y (b in g), y->b (a in g).
-    const int f = c / 3, g = o / 3;
-    const int oXA = opp[TriMesh::prev(c)], oBX = opp[TriMesh::next(c)];
-    const int oAY = opp[TriMesh::next(o)], oYB = opp[TriMesh::prev(o)];
-    // New faces: f = (x, a, y), g = (y, b, x).
-    tris[f] = {x, a, y};
-    tris[g] = {y, b, x};
-    const int f0 = 3 * f, g0 = 3 * g;
-    const auto link = [&](int corner, int other) {
-      opp[corner] = other;
-      if (other >= 0) opp[other] = corner;
-    };
-    link(f0 + 0, oAY);     // x faces a->y
-    link(f0 + 1, g0 + 1);  // a and b face the new diagonal
-    link(f0 + 2, oXA);     // y faces x->a
-    link(g0 + 0, oBX);     // y faces b->x
-    link(g0 + 2, oYB);     // x faces y->b
+    if (!shouldFlip(mesh, c, o, cosFeature, tolerance)) continue;
+    flipEdge(mesh, c, o);
     ++r.flips;
-    for (int k : {f0, f0 + 2, g0, g0 + 2}) enqueue(k);
+    // The quad's four outer edges, as corners of the new faces f = c / 3 and g = o / 3.
+    const int f0 = 3 * (c / 3), g0 = 3 * (o / 3);
+    for (int k : {f0, f0 + 2, g0, g0 + 2}) work.push(k);
   }
   // oppositeCorner is up to date and flips keep the topology: only the vertex lists change.
   if (r.flips > 0) rebuildVertexCorners(mesh);

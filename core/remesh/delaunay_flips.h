@@ -22,6 +22,7 @@
 // maxFlipsPerFace * F flips. The adjacency is updated flip by flip, the vertex lists once at the end.
 #pragma once
 
+#include "core/base/status.h"
 #include "core/mesh/tri_mesh.h"
 
 namespace gr {
@@ -41,7 +42,9 @@ struct DelaunayFlipResult {
 };
 
 /// Flips edges of a manifold, consistently oriented mesh in place (positions unchanged) and
-/// rebuilds its adjacency. A mesh that is not manifold is left as it is (0 flips).
-DelaunayFlipResult flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& params = {});
+/// rebuilds its adjacency. Fails, leaving the mesh as it is, with NonManifold (a non-manifold edge
+/// or vertex) or InvalidInput (no faces, or faces not oriented coherently: see orientCoherently in
+/// mesh/orientation.h).
+Expected<DelaunayFlipResult> flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& params = {});
 
 }  // namespace gr

@@ -88,9 +88,9 @@ Status checkInput(const TriMesh& mesh, const std::vector<SurfacePoint>& samples)
                           " does not exist");
   }
   if (mesh.topology.nonManifoldEdges > 0 || mesh.topology.nonManifoldVertices > 0)
-    return invalidInput("the mesh is not manifold (" + std::to_string(mesh.topology.nonManifoldEdges) +
-                        " non-manifold edges, " + std::to_string(mesh.topology.nonManifoldVertices) +
-                        " non-manifold vertices)");
+    return nonManifold("the mesh is not manifold (" + std::to_string(mesh.topology.nonManifoldEdges) +
+                       " non-manifold edges, " + std::to_string(mesh.topology.nonManifoldVertices) +
+                       " non-manifold vertices)");
   // A component whose faces all have zero area (points on a line or at one place) has no
   // surface to triangulate.
   std::vector<double> area(mesh.topology.components, 0.0);
@@ -109,6 +109,201 @@ Status checkInput(const TriMesh& mesh, const std::vector<SurfacePoint>& samples)
                         std::to_string(mesh.topology.inconsistentEdges) +
                         " edges have two faces that disagree): orient them first (orientCoherently)");
   return Status::ok();
+}
+
+/// Per input vertex, 1 if it is on a boundary edge.
+std::vector<char> boundaryVertices(const TriMesh& mesh) {
+  std::vector<char> onBoundary(mesh.vertexCount(), 0);
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
+    if (mesh.oppositeCorner[c] == kBoundary) onBoundary[mesh.vertex(TriMesh::next(c))] = onBoundary[mesh.vertex(TriMesh::prev(c))] = 1;
+  return onBoundary;
+}
+
+/// A component the samples do not reach (fewer samples than components) gets one at its lowest
+/// vertex, as the sampling gives each component its first: counted as added by the repair.
+Status sampleUnreachedComponents(FastMarcher& marcher, std::vector<SurfacePoint>& samples) {
+  const TriMesh& mesh = marcher.mesh();
+  std::vector<char> reached(mesh.topology.components, 0);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    if (marcher.cell()[v] >= 0 && mesh.topology.componentOfVertex[v] >= 0) reached[mesh.topology.componentOfVertex[v]] = 1;
+  bool added = false;
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    const int c = mesh.topology.componentOfVertex[v];
+    if (c < 0 || reached[c]) continue;
+    reached[c] = 1;
+    samples.push_back(SurfacePoint::atVertex(v));
+    if (Status s = marcher.addSource(v, static_cast<int>(samples.size()) - 1); !s) return s;
+    added = true;
+  }
+  if (added)
+    if (Status s = marcher.propagate(); !s) return s;
+  return Status::ok();
+}
+
+/// Cells that reach the input's boundary while their sample is off it (the output's boundary
+/// would cut across the surface), appended to `bad`. `sampleOnBoundary` is per cell.
+void addCellsWithSampleOffBoundary(const std::vector<int>& label, const std::vector<char>& onBoundary,
+                                   const std::vector<char>& sampleOnBoundary, std::vector<int>& bad) {
+  const int cells = static_cast<int>(sampleOnBoundary.size());
+  std::vector<char> cellOnBoundary(cells, 0);
+  for (size_t v = 0; v < onBoundary.size(); ++v)
+    if (onBoundary[v] && label[v] >= 0) cellOnBoundary[label[v]] = 1;
+  for (int c = 0; c < cells; ++c)
+    if (cellOnBoundary[c] && !sampleOnBoundary[c]) bad.push_back(c);
+}
+
+/// Whether a dual without defects is the triangulation sought: the input's components, genus and
+/// boundary loops, manifold and coherently oriented, and no non-empty cell without a triangle.
+bool hasInputTopology(const TriMesh& out, const TriMesh& mesh, const std::vector<int>& cellSize) {
+  const Topology& t = out.topology;
+  int isolated = 0;
+  for (int v = 0; v < out.vertexCount(); ++v) isolated += out.valence(v) == 0 && cellSize[v] > 0;
+  return t.components == mesh.topology.components && t.genus == mesh.topology.genus &&
+         t.boundaryLoops == mesh.topology.boundaryLoops && isolated == 0 && t.inconsistentEdges == 0 &&
+         t.isManifold();
+}
+
+/// Cells to refine when the dual is valid locally but not of the input's topology (e.g. a handle
+/// not captured, a component with too few cells): the non-empty cells without a triangle, else
+/// the tenth of the cells with the largest distance to their sample (at least one).
+std::vector<int> cellsToRefineForTopology(const FastMarcher& marcher, const TriMesh& out,
+                                          const std::vector<int>& cellSize) {
+  const std::vector<int>& label = marcher.cell();
+  const int cells = static_cast<int>(cellSize.size());
+  std::vector<int> bad;
+  for (int v = 0; v < out.vertexCount(); ++v)
+    if (out.valence(v) == 0 && cellSize[v] > 0) bad.push_back(v);
+  if (bad.empty()) {
+    std::vector<double> far(cells, 0.0);
+    for (int v = 0; v < marcher.mesh().vertexCount(); ++v)
+      if (label[v] >= 0) far[label[v]] = std::max(far[label[v]], marcher.distance()[v]);
+    std::vector<int> order(cells);
+    for (int c = 0; c < cells; ++c) order[c] = c;
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return far[a] > far[b]; });
+    bad.assign(order.begin(), order.begin() + std::max(1, cells / 10));
+  }
+  return bad;
+}
+
+/// Renumbers a valid dual without its isolated vertices (the samples of empty cells), in the
+/// mesh, in r.origin and in r.cell (the input vertices' cells).
+Status dropEmptyCells(TriMesh& out, const std::vector<Vec3>& positions, const std::vector<SurfacePoint>& samples,
+                      const std::vector<int>& label, DelaunayResult& r) {
+  const int cells = static_cast<int>(samples.size());
+  std::vector<int> index(cells, -1);
+  std::vector<Vec3> kept;
+  for (int c = 0; c < cells; ++c)
+    if (out.valence(c) > 0) {
+      index[c] = static_cast<int>(kept.size());
+      kept.push_back(positions[c]);
+      r.origin.push_back(samples[c]);
+    }
+  std::vector<Tri> tris = out.triangles;
+  for (Tri& tri : tris)
+    for (int& v : tri) v = index[v];
+  Expected<TriMesh> renumbered = buildTriMesh(std::move(kept), std::move(tris));
+  if (!renumbered) return renumbered.status();
+  out = std::move(renumbered).value();
+  r.cell = label;
+  for (int& l : r.cell)
+    if (l >= 0) l = index[l];
+  return Status::ok();
+}
+
+/// The result from a valid dual: samples of empty cells left out, then the Delaunay flips.
+Expected<DelaunayResult> finishValidDual(TriMesh out, const std::vector<Vec3>& positions,
+                                         const std::vector<SurfacePoint>& samples, const std::vector<int>& label,
+                                         const DelaunayParams& params, int initialCount, int round) {
+  DelaunayResult r;
+  const int cells = static_cast<int>(samples.size());
+  if (out.topology.isolatedVertices > 0) {  // drop the empty cells' samples, renumber the rest
+    if (Status s = dropEmptyCells(out, positions, samples, label, r); !s) return s;
+    r.droppedSamples = cells - out.vertexCount();
+  } else {
+    r.origin = samples;
+    r.cell = label;
+  }
+  if (params.delaunayFlips) {
+    Expected<DelaunayFlipResult> flipped = flipToDelaunay(out, params.flips);
+    if (!flipped) return flipped.status();
+    r.flippedEdges = flipped->flips;
+  }
+  r.mesh = std::move(out);
+  r.addedSamples = cells - initialCount;
+  r.repairRounds = round;
+  return r;
+}
+
+/// Per cell, the vertex to add as a sample if the cell is refined: its vertex farthest from the
+/// samples, or its farthest boundary vertex if it reaches the boundary (so that boundaries are
+/// sampled on the boundary); -1 for a cell without vertices.
+std::vector<int> farthestVertexPerCell(const FastMarcher& marcher, const std::vector<char>& onBoundary, int cells) {
+  const std::vector<int>& label = marcher.cell();
+  std::vector<int> farthest(cells, -1), farthestOnBoundary(cells, -1);
+  for (int v = 0; v < marcher.mesh().vertexCount(); ++v) {
+    const int c = label[v];
+    if (c < 0) continue;
+    const double u = marcher.distance()[v];
+    if (farthest[c] < 0 || u > marcher.distance()[farthest[c]]) farthest[c] = v;
+    if (onBoundary[v] && (farthestOnBoundary[c] < 0 || u > marcher.distance()[farthestOnBoundary[c]]))
+      farthestOnBoundary[c] = v;
+  }
+  for (int c = 0; c < cells; ++c)
+    if (farthestOnBoundary[c] >= 0 && marcher.distance()[farthestOnBoundary[c]] > 0.0) farthest[c] = farthestOnBoundary[c];
+  return farthest;
+}
+
+/// Per cell, 1 if it is refined: the bad cells, and the cells around a bad cell that is only its
+/// sample (it cannot be refined itself).
+std::vector<char> cellsToRefine(const FastMarcher& marcher, const std::vector<SurfacePoint>& samples,
+                                const std::vector<int>& bad, const std::vector<int>& farthest) {
+  const TriMesh& mesh = marcher.mesh();
+  const std::vector<int>& label = marcher.cell();
+  std::vector<char> isBad(samples.size(), 0);
+  for (int c : bad) isBad[c] = 1;
+  for (int c : bad)
+    if (farthest[c] < 0 || marcher.distance()[farthest[c]] <= 0.0) {
+      const SurfacePoint& p = samples[c];
+      const Tri around = p.vertex >= 0 ? Tri{p.vertex, p.vertex, p.vertex} : mesh.triangles[p.face];
+      for (int x : around)
+        for (const int* k = mesh.cornersBegin(x); k != mesh.cornersEnd(x); ++k)
+          for (int w : {mesh.vertex(TriMesh::next(*k)), mesh.vertex(TriMesh::prev(*k))})
+            if (label[w] >= 0) isBad[label[w]] = 1;
+    }
+  return isBad;
+}
+
+/// Adds the new samples of a round of repair and returns how many: in each bad cell its farthest
+/// vertex (farthestVertexPerCell). Farthest first, as the sampling would; a candidate nearer to a
+/// sample added in this round than to the existing ones is left for the next round (adjacent bad
+/// cells have their farthest vertices around the same Voronoi vertex: adding all of them would
+/// cluster). The fronts are not propagated.
+Expected<int> addRefinementSamples(FastMarcher& marcher, std::vector<SurfacePoint>& samples, std::vector<int> bad,
+                                   const std::vector<char>& onBoundary) {
+  const int cells = static_cast<int>(samples.size());
+  std::sort(bad.begin(), bad.end());
+  bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+  const std::vector<int> farthest = farthestVertexPerCell(marcher, onBoundary, cells);
+  const std::vector<char> isBad = cellsToRefine(marcher, samples, bad, farthest);
+  std::vector<int> candidates;
+  for (int c = 0; c < cells; ++c)
+    if (isBad[c] && farthest[c] >= 0 && marcher.distance()[farthest[c]] > 0.0) candidates.push_back(farthest[c]);
+  std::sort(candidates.begin(), candidates.end(),
+            [&](int a, int b) { return marcher.distance()[a] > marcher.distance()[b]; });
+  std::vector<Vec3> addedPositions;
+  int added = 0;
+  for (int v : candidates) {
+    const Vec3& p = marcher.mesh().positions[v];
+    const double u = marcher.distance()[v];
+    bool covered = false;
+    for (const Vec3& q : addedPositions) covered = covered || (p - q).squaredNorm() < u * u;
+    if (covered) continue;
+    addedPositions.push_back(p);
+    samples.push_back(SurfacePoint::atVertex(v));
+    if (Status s = marcher.addSource(v, static_cast<int>(samples.size()) - 1); !s) return s;
+    ++added;
+  }
+  return added;
 }
 
 }  // namespace
@@ -131,31 +326,9 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
                                           const DelaunayParams& params, Progress progress) {
   const TriMesh& mesh = marcher.mesh();
   if (Status s = checkInput(mesh, samples); !s) return s;
-  std::vector<char> onBoundary(mesh.vertexCount(), 0);
-  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
-    if (mesh.oppositeCorner[c] == kBoundary) onBoundary[mesh.vertex(TriMesh::next(c))] = onBoundary[mesh.vertex(TriMesh::prev(c))] = 1;
-
-
-  DelaunayResult r;
+  const std::vector<char> onBoundary = boundaryVertices(mesh);
   const int initialCount = static_cast<int>(samples.size());
-  // A component the samples do not reach (fewer samples than components) gets one at its lowest
-  // vertex, as the sampling gives each component its first: counted as added by the repair.
-  {
-    std::vector<char> reached(mesh.topology.components, 0);
-    for (int v = 0; v < mesh.vertexCount(); ++v)
-      if (marcher.cell()[v] >= 0 && mesh.topology.componentOfVertex[v] >= 0) reached[mesh.topology.componentOfVertex[v]] = 1;
-    bool added = false;
-    for (int v = 0; v < mesh.vertexCount(); ++v) {
-      const int c = mesh.topology.componentOfVertex[v];
-      if (c < 0 || reached[c]) continue;
-      reached[c] = 1;
-      samples.push_back(SurfacePoint::atVertex(v));
-      if (Status s = marcher.addSource(v, static_cast<int>(samples.size()) - 1); !s) return s;
-      added = true;
-    }
-    if (added)
-      if (Status s = marcher.propagate(); !s) return s;
-  }
+  if (Status s = sampleUnreachedComponents(marcher, samples); !s) return s;
   for (int round = 0;; ++round) {
     const std::vector<int>& label = marcher.cell();
     const int cells = static_cast<int>(samples.size());
@@ -166,16 +339,11 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
     // Components without any triangle (one cell covers a whole component) are defects too.
     Expected<TriMesh> out = dual.triangles.empty() ? Expected<TriMesh>(invalidInput("no triangle"))
                                                    : buildTriMesh(positions, dual.triangles);
-    // A cell that reaches the input's boundary must have its sample on it, or the output's
-    // boundary would cut across the surface.
-    std::vector<char> sampleOnBoundary(cells, 0), cellOnBoundary(cells, 0);
+    // A cell that reaches the input's boundary must have its sample on it.
+    std::vector<char> sampleOnBoundary(cells, 0);
     for (int c = 0; c < cells; ++c) sampleOnBoundary[c] = samples[c].vertex >= 0 && onBoundary[samples[c].vertex];
-    for (int v = 0; v < mesh.vertexCount(); ++v)
-      if (onBoundary[v] && label[v] >= 0) cellOnBoundary[label[v]] = 1;
-    for (int c = 0; c < cells; ++c)
-      if (cellOnBoundary[c] && !sampleOnBoundary[c]) bad.push_back(c);
+    addCellsWithSampleOffBoundary(label, onBoundary, sampleOnBoundary, bad);
     if (out) {
-      const Topology& t = out->topology;
       const std::vector<int> defects = defectCells(*out, sampleOnBoundary);
       bad.insert(bad.end(), defects.begin(), defects.end());
       // A sample inside a face may end up nearest to no vertex (another sample took its cell):
@@ -183,54 +351,9 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
       std::vector<int> cellSize(cells, 0);
       for (int v = 0; v < mesh.vertexCount(); ++v)
         if (label[v] >= 0) ++cellSize[label[v]];
-      int isolated = 0;
-      for (int v = 0; v < out->vertexCount(); ++v) isolated += out->valence(v) == 0 && cellSize[v] > 0;
-      const bool sameTopology = t.components == mesh.topology.components && t.genus == mesh.topology.genus &&
-                                t.boundaryLoops == mesh.topology.boundaryLoops && isolated == 0 &&
-                                t.inconsistentEdges == 0 && t.isManifold();
-      if (bad.empty() && sameTopology) {
-        if (t.isolatedVertices > 0) {  // drop the empty cells' samples, renumber the rest
-          std::vector<int> index(cells, -1);
-          std::vector<Vec3> kept;
-          for (int c = 0; c < cells; ++c)
-            if (out->valence(c) > 0) {
-              index[c] = static_cast<int>(kept.size());
-              kept.push_back(positions[c]);
-              r.origin.push_back(samples[c]);
-            }
-          std::vector<Tri> tris = out->triangles;
-          for (Tri& tri : tris)
-            for (int& v : tri) v = index[v];
-          out = buildTriMesh(std::move(kept), std::move(tris));
-          r.cell = label;
-          for (int& l : r.cell)
-            if (l >= 0) l = index[l];
-          r.droppedSamples = cells - out->vertexCount();
-        } else {
-          r.origin = samples;
-          r.cell = label;
-        }
-        if (params.delaunayFlips) r.flippedEdges = flipToDelaunay(*out, params.flips).flips;
-        r.mesh = std::move(out).value();
-        r.addedSamples = cells - initialCount;
-        r.repairRounds = round;
-        return r;
-      }
-      if (bad.empty()) {
-        // Valid locally but not the input's topology (e.g. a handle not captured, a component
-        // with too few cells): refine the cells with the largest distance to their sample.
-        for (int v = 0; v < out->vertexCount(); ++v)
-          if (out->valence(v) == 0 && cellSize[v] > 0) bad.push_back(v);
-        if (bad.empty()) {
-          std::vector<double> far(cells, 0.0);
-          for (int v = 0; v < mesh.vertexCount(); ++v)
-            if (label[v] >= 0) far[label[v]] = std::max(far[label[v]], marcher.distance()[v]);
-          std::vector<int> order(cells);
-          for (int c = 0; c < cells; ++c) order[c] = c;
-          std::sort(order.begin(), order.end(), [&](int a, int b) { return far[a] > far[b]; });
-          bad.assign(order.begin(), order.begin() + std::max(1, cells / 10));
-        }
-      }
+      if (bad.empty() && hasInputTopology(*out, mesh, cellSize))
+        return finishValidDual(std::move(out).value(), positions, samples, label, params, initialCount, round);
+      if (bad.empty()) bad = cellsToRefineForTopology(marcher, *out, cellSize);
     } else {
       for (int c = 0; c < cells; ++c) bad.push_back(c);
     }
@@ -241,56 +364,9 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
     // a tenth of what is left each round.
     if (!progress.report(1.0 - std::pow(0.9, round + 1), "Geodesic Delaunay repair"))
       return cancelled();
-    // New samples: in each bad cell, its vertex farthest from the samples.
-    std::sort(bad.begin(), bad.end());
-    bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
-    // New samples: in each bad cell its farthest vertex; the farthest boundary vertex in cells
-    // that reach the boundary, so that boundaries are sampled on the boundary.
-    std::vector<int> farthest(cells, -1), farthestOnBoundary(cells, -1);
-    for (int v = 0; v < mesh.vertexCount(); ++v) {
-      const int c = label[v];
-      if (c < 0) continue;
-      const double u = marcher.distance()[v];
-      if (farthest[c] < 0 || u > marcher.distance()[farthest[c]]) farthest[c] = v;
-      if (onBoundary[v] && (farthestOnBoundary[c] < 0 || u > marcher.distance()[farthestOnBoundary[c]]))
-        farthestOnBoundary[c] = v;
-    }
-    for (int c = 0; c < cells; ++c)
-      if (farthestOnBoundary[c] >= 0 && marcher.distance()[farthestOnBoundary[c]] > 0.0) farthest[c] = farthestOnBoundary[c];
-    // A bad cell that is only its sample cannot be refined: refine the cells around it instead.
-    std::vector<char> isBad(cells, 0);
-    for (int c : bad) isBad[c] = 1;
-    for (int c : bad)
-      if (farthest[c] < 0 || marcher.distance()[farthest[c]] <= 0.0) {
-        const SurfacePoint& p = samples[c];
-        const Tri around = p.vertex >= 0 ? Tri{p.vertex, p.vertex, p.vertex} : mesh.triangles[p.face];
-        for (int x : around)
-          for (const int* k = mesh.cornersBegin(x); k != mesh.cornersEnd(x); ++k)
-            for (int w : {mesh.vertex(TriMesh::next(*k)), mesh.vertex(TriMesh::prev(*k))})
-              if (label[w] >= 0) isBad[label[w]] = 1;
-      }
-    // Farthest first, as the sampling would; a candidate nearer to a sample added in this round
-    // than to the existing ones is left for the next round (adjacent bad cells have their
-    // farthest vertices around the same Voronoi vertex: adding all of them would cluster).
-    std::vector<int> candidates;
-    for (int c = 0; c < cells; ++c)
-      if (isBad[c] && farthest[c] >= 0 && marcher.distance()[farthest[c]] > 0.0) candidates.push_back(farthest[c]);
-    std::sort(candidates.begin(), candidates.end(),
-              [&](int a, int b) { return marcher.distance()[a] > marcher.distance()[b]; });
-    std::vector<Vec3> addedPositions;
-    int added = 0;
-    for (int v : candidates) {
-      const Vec3& p = mesh.positions[v];
-      const double u = marcher.distance()[v];
-      bool covered = false;
-      for (const Vec3& q : addedPositions) covered = covered || (p - q).squaredNorm() < u * u;
-      if (covered) continue;
-      addedPositions.push_back(p);
-      samples.push_back(SurfacePoint::atVertex(v));
-      if (Status s = marcher.addSource(v, static_cast<int>(samples.size()) - 1); !s) return s;
-      ++added;
-    }
-    if (added == 0)
+    const Expected<int> added = addRefinementSamples(marcher, samples, std::move(bad), onBoundary);
+    if (!added) return added.status();
+    if (*added == 0)
       return Status{StatusCode::NotConverged, "the geodesic Delaunay triangulation is invalid and no cell can be refined"};
     if (Status s = marcher.propagate(); !s) return s;
   }

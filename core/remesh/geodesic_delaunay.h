@@ -56,9 +56,9 @@ struct DelaunayResult {
   std::vector<int> cell;            ///< per input vertex, its Voronoi cell: an output vertex
 };
 
-/// Fails with InvalidInput (no samples, a sample out of range, a non-manifold mesh, faces not oriented
-/// coherently: see orientCoherently in mesh/orientation.h, a component of zero area),
-/// NotConverged (still invalid after maxRepairRounds) or Cancelled.
+/// Fails with InvalidInput (no samples, a sample out of range, faces not oriented coherently: see
+/// orientCoherently in mesh/orientation.h, a component of zero area), NonManifold (a non-manifold
+/// edge or vertex), NotConverged (still invalid after maxRepairRounds) or Cancelled.
 Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> samples,
                                           const DelaunayParams& params = {}, Progress progress = {});
 

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -15,33 +16,35 @@ namespace {
 
 constexpr double kDegree = kPi / 180.0;
 
+/// Barycentric coordinates of the point at parameter t on the edge from corner i to corner j.
+Vec3 onEdge(int i, int j, double t) {
+  Vec3 w = Vec3::Zero();
+  w[i] = 1 - t;
+  w[j] = t;
+  return w;
+}
+
 /// Closest point of triangle (a, b, c) to p, as barycentric coordinates (Ericson, Real-Time
 /// Collision Detection, 5.1.5). A coordinate is exactly 0 when the point is on the opposite edge.
 Vec3 closestBary(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  const Vec3 ab = b - a, ac = c - a;
+  // The dot products of the edges ab and ac with the vector from corner q to p.
+  const auto dots = [&](const Vec3& q) {
+    const Vec3 qp = p - q;
+    return std::array<double, 2>{ab.dot(qp), ac.dot(qp)};
+  };
+  const auto [d1, d2] = dots(a);
   if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  const auto [d3, d4] = dots(b);
   if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
   const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-    const double v = d1 / (d1 - d3);
-    return {1 - v, v, 0};
-  }
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return onEdge(0, 1, d1 / (d1 - d3));
+  const auto [d5, d6] = dots(c);
   if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
   const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-    const double w = d2 / (d2 - d6);
-    return {1 - w, 0, w};
-  }
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return onEdge(0, 2, d2 / (d2 - d6));
   const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {0, 1 - w, w};
-  }
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return onEdge(1, 2, (d4 - d3) / ((d4 - d3) + (d5 - d6)));
   const double denom = va + vb + vc;
   if (!(denom > 0)) return {1.0 / 3, 1.0 / 3, 1.0 / 3};  // degenerate face
   const double v = vb / denom, w = vc / denom;
@@ -173,25 +176,34 @@ double smallestAngleCosine(const Vec3& p, const Vec3& q, const Vec3& r) {
   return denominator > 0 ? std::min(1.0, (o1 + o2 - shortest) / denominator) : 1.0;
 }
 
-}  // namespace
-
-Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
-                                          const RelaxationParams& params) {
-  RelaxationResult r;
+/// Refuses what the relaxation cannot work on: points that do not match the output or the input,
+/// a non-manifold mesh, an output without faces or with faces not oriented alike.
+Status checkRelaxationInput(const TriMesh& output, const std::vector<SurfacePoint>& points, const TriMesh& input) {
   const int n = output.vertexCount();
   if (static_cast<int>(points.size()) != n)
     return invalidInput("relaxation: " + std::to_string(points.size()) + " surface points for " + std::to_string(n) +
                         " vertices");
-  if (!output.topology.isManifold() || output.topology.inconsistentEdges > 0 || !input.topology.isManifold())
-    return invalidInput("relaxation needs manifold, consistently oriented meshes");
+  if (!output.topology.isManifold() || !input.topology.isManifold())
+    return nonManifold(std::string("relaxation needs manifold meshes; the ") +
+                       (output.topology.isManifold() ? "input" : "output") + " is not");
+  if (output.topology.inconsistentEdges > 0)
+    return invalidInput("relaxation: the faces of the output are not oriented coherently (" +
+                        std::to_string(output.topology.inconsistentEdges) +
+                        " edges have two faces that disagree): orient them first (orientCoherently)");
+  if (output.faceCount() == 0) return invalidInput("relaxation: the output has no faces");
   for (const SurfacePoint& p : points) {
     const bool ok = p.vertex >= 0 ? p.vertex < input.vertexCount() && input.valence(p.vertex) > 0
                                   : p.face >= 0 && p.face < input.faceCount();
     if (!ok) return invalidInput("relaxation: a surface point out of range of the input");
   }
-  if (params.iterations <= 0) return r;
+  return Status::ok();
+}
 
-  const SurfaceWalker walker(input, params.featureAngleDegrees);
+/// Per output vertex, 1 if it does not move: on a boundary edge, on an input vertex with a
+/// blocked edge (a crease, corner or boundary of the input), or in no face.
+std::vector<char> fixedVertices(const TriMesh& output, const std::vector<SurfacePoint>& points,
+                                const SurfaceWalker& walker) {
+  const int n = output.vertexCount();
   std::vector<char> fixed(n, 0);
   for (int c = 0; c < 3 * output.faceCount(); ++c)
     if (output.oppositeCorner[c] < 0) {  // a boundary edge: both its vertices stay
@@ -201,102 +213,147 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
   for (int i = 0; i < n; ++i) {
     if (points[i].vertex >= 0 && walker.sharpVertex(points[i].vertex)) fixed[i] = 1;
     if (output.valence(i) == 0) fixed[i] = 1;
-    r.fixedVertices += fixed[i];
+  }
+  return fixed;
+}
+
+/// Moves the free vertices of the output, one at a time, on the input surface.
+class Relaxer {
+ public:
+  Relaxer(TriMesh& output, std::vector<SurfacePoint>& points, const SurfaceWalker& walker, double maxDeviation)
+      : output_(output), pos_(output.positions), points_(points), walker_(walker), maxDeviation_(maxDeviation) {}
+
+  /// Moves v toward the mean of its neighbours in its tangent plane, if that improves its ring;
+  /// where a small angle remains, tries steps in eight tangent directions.
+  void relaxVertex(int v) {
+    const Vec3 p = pos_[v];
+    Vec3 centre = Vec3::Zero(), ringNormal = Vec3::Zero();
+    double ringLength = 0;
+    for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c) {
+      const Vec3& a = pos_[output_.vertex(TriMesh::next(*c))];
+      const Vec3& b = pos_[output_.vertex(TriMesh::prev(*c))];
+      centre += a;  // each neighbour once: it is `next` in exactly one face of a closed fan
+      ringNormal += (a - p).cross(b - p);
+      ringLength += (a - p).norm();
+    }
+    centre /= output_.valence(v);
+    ringLength /= output_.valence(v);
+    const double maxAway = maxDeviation_ * ringLength;
+    // The tangent plane: the output ring's, unless the ring is folded against the input.
+    const int face = walker_.faceOf(points_[v]);
+    Vec3 normal = walker_.normal(face);
+    if (normal.isZero()) return;
+    if (ringNormal.dot(normal) > 0.5 * ringNormal.norm()) normal = ringNormal.normalized();
+    Vec3 move = centre - p;
+    move -= normal * normal.dot(move);
+    const double smallest = tryMove(v, p + move, face, ring(v, p, nullptr), 0.0, maxAway);
+    if (smallest >= kGoal) return;
+    tryTangentSteps(v, normal, ringLength, smallest);
   }
 
-  const double goal = 30.0 * kDegree;
-  std::vector<Vec3>& pos = output.positions;
-  // Smallest angle (radians) of the faces around v with v at position p, and their normals.
-  const auto ring = [&](int v, const Vec3& p, std::vector<Vec3>* normals) {
+  int moves() const { return moves_; }
+
+ private:
+  static constexpr double kGoal = 30.0 * kDegree;  ///< smallest angle a move need not exceed
+
+  /// Smallest angle (radians) of the faces around v with v at position p, and their normals.
+  double ring(int v, const Vec3& p, std::vector<Vec3>* normals) const {
     double largestCosine = -1;
-    for (const int* c = output.cornersBegin(v); c != output.cornersEnd(v); ++c) {
-      const Vec3& a = pos[output.vertex(TriMesh::next(*c))];
-      const Vec3& b = pos[output.vertex(TriMesh::prev(*c))];
+    for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c) {
+      const Vec3& a = pos_[output_.vertex(TriMesh::next(*c))];
+      const Vec3& b = pos_[output_.vertex(TriMesh::prev(*c))];
       largestCosine = std::max(largestCosine, smallestAngleCosine(p, a, b));
       if (normals) normals->push_back((a - p).cross(b - p));
     }
     return std::acos(largestCosine);
-  };
-  // Moves v to the input point closest to `target` if no face around v turns over (except to
-  // face the way the input does there) and the ring's smallest angle stays at least
-  // max(min(before, goal), floor).
-  std::vector<Vec3> before, after;
-  const auto tryMove = [&](int v, const Vec3& target, int face, double smallestBefore, double floor, double maxAway) {
-    const SurfacePoint moved = walker.project(target, face);
-    const Vec3 q = walker.pointOf(moved.face, moved.bary);
-    const Vec3 normalThere = walker.normal(moved.face);
-    before.clear();
-    after.clear();
-    ring(v, pos[v], &before);
-    const double smallest = ring(v, q, &after);
+  }
+
+  /// Moves v to the input point closest to `target` if no face around v turns over (except to
+  /// face the way the input does there), the ring's smallest angle stays at least
+  /// max(min(before, goal), floor) and the point v leaves stays within maxAway of the new fan.
+  /// Returns the ring's smallest angle after (smallestBefore if v stays).
+  double tryMove(int v, const Vec3& target, int face, double smallestBefore, double floor, double maxAway) {
+    const SurfacePoint moved = walker_.project(target, face);
+    const Vec3 q = walker_.pointOf(moved.face, moved.bary);
+    const Vec3 normalThere = walker_.normal(moved.face);
+    before_.clear();
+    after_.clear();
+    ring(v, pos_[v], &before_);
+    const double smallest = ring(v, q, &after_);
     // A face may not turn over, unless it then faces the way the input does (an unfolding).
-    for (size_t k = 0; k < after.size(); ++k)
-      if (!(after[k].dot(before[k]) > 0) && !(after[k].dot(normalThere) > 0)) return smallestBefore;
-    if (smallest < std::max(std::min(smallestBefore, goal), floor)) return smallestBefore;
+    for (size_t k = 0; k < after_.size(); ++k)
+      if (!(after_[k].dot(before_[k]) > 0) && !(after_[k].dot(normalThere) > 0)) return smallestBefore;
+    if (smallest < std::max(std::min(smallestBefore, kGoal), floor)) return smallestBefore;
     // The point it leaves must stay close to the new fan: a vertex on a tip or a ridge keeps it.
-    const Vec3& p = pos[v];
+    const Vec3& p = pos_[v];
     double away = std::numeric_limits<double>::infinity();
-    for (const int* c = output.cornersBegin(v); c != output.cornersEnd(v); ++c) {
-      const Vec3& a = pos[output.vertex(TriMesh::next(*c))];
-      const Vec3& b = pos[output.vertex(TriMesh::prev(*c))];
+    for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c) {
+      const Vec3& a = pos_[output_.vertex(TriMesh::next(*c))];
+      const Vec3& b = pos_[output_.vertex(TriMesh::prev(*c))];
       const Vec3 w = closestBary(p, q, a, b);
       away = std::min(away, (p - (w[0] * q + w[1] * a + w[2] * b)).squaredNorm());
     }
     if (away > maxAway * maxAway) return smallestBefore;
-    pos[v] = q;
-    points[v] = moved;
-    ++r.moves;
+    pos_[v] = q;
+    points_[v] = moved;
+    ++moves_;
     return smallest;
-  };
-  for (int it = 0; it < params.iterations; ++it) {
-    for (int v = 0; v < n; ++v) {
-      if (fixed[v]) continue;
-      const Vec3 p = pos[v];
-      Vec3 centre = Vec3::Zero(), ringNormal = Vec3::Zero();
-      double ringLength = 0;
-      for (const int* c = output.cornersBegin(v); c != output.cornersEnd(v); ++c) {
-        const Vec3& a = pos[output.vertex(TriMesh::next(*c))];
-        const Vec3& b = pos[output.vertex(TriMesh::prev(*c))];
-        centre += a;  // each neighbour once: it is `next` in exactly one face of a closed fan
-        ringNormal += (a - p).cross(b - p);
-        ringLength += (a - p).norm();
-      }
-      centre /= output.valence(v);
-      ringLength /= output.valence(v);
-      const double maxAway = params.maxDeviation * ringLength;
-      // The tangent plane: the output ring's, unless the ring is folded against the input.
-      const int face = walker.faceOf(points[v]);
-      Vec3 normal = walker.normal(face);
-      if (normal.isZero()) continue;
-      if (ringNormal.dot(normal) > 0.5 * ringNormal.norm()) normal = ringNormal.normalized();
-      Vec3 move = centre - p;
-      move -= normal * normal.dot(move);
-      const double smallest = tryMove(v, p + move, face, ring(v, p, nullptr), 0.0, maxAway);
-      if (smallest >= goal) continue;
-      // Still a small angle here (at a tip, a saddle, next to a fixed vertex): the mean of the
-      // ring is not better, so try steps in eight tangent directions from where the vertex is
-      // now and keep the best. No deviation limit: a bad triangle costs more than the error.
-      const Vec3 here = pos[v];
-      const int hereFace = walker.faceOf(points[v]);
-      const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
-      double best = smallest;
-      Vec3 bestTarget = here;
-      for (const double step : {0.4, 0.2, 0.1})
-        for (int k = 0; k < 8; ++k) {
-          const Vec3 target = here + step * ringLength * (std::cos(k * kPi / 4) * e1 + std::sin(k * kPi / 4) * e2);
-          const SurfacePoint moved = walker.project(target, hereFace);
-          const double s = ring(v, walker.pointOf(moved.face, moved.bary), nullptr);
-          if (s > best) {
-            best = s;
-            bestTarget = target;
-          }
+  }
+
+  /// Still a small angle at v (at a tip, a saddle, next to a fixed vertex): the mean of the ring
+  /// is not better, so try steps in eight tangent directions from where the vertex is now and
+  /// keep the best. No deviation limit: a bad triangle costs more than the error.
+  void tryTangentSteps(int v, const Vec3& normal, double ringLength, double smallest) {
+    const Vec3 here = pos_[v];
+    const int hereFace = walker_.faceOf(points_[v]);
+    const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
+    double best = smallest;
+    Vec3 bestTarget = here;
+    for (const double step : {0.4, 0.2, 0.1})
+      for (int k = 0; k < 8; ++k) {
+        const Vec3 target = here + step * ringLength * (std::cos(k * kPi / 4) * e1 + std::sin(k * kPi / 4) * e2);
+        const SurfacePoint moved = walker_.project(target, hereFace);
+        const double s = ring(v, walker_.pointOf(moved.face, moved.bary), nullptr);
+        if (s > best) {
+          best = s;
+          bestTarget = target;
         }
-      if (best > smallest)
-        tryMove(v, bestTarget, hereFace, smallest, smallest, std::numeric_limits<double>::infinity());
-    }
-    r.flips += flipToDelaunay(output, params.flips).flips;
+      }
+    if (best > smallest)
+      tryMove(v, bestTarget, hereFace, smallest, smallest, std::numeric_limits<double>::infinity());
+  }
+
+  TriMesh& output_;
+  std::vector<Vec3>& pos_;  ///< the output's positions
+  std::vector<SurfacePoint>& points_;
+  const SurfaceWalker& walker_;
+  double maxDeviation_;
+  std::vector<Vec3> before_, after_;  ///< normals of v's faces before and after a move
+  int moves_ = 0;
+};
+
+}  // namespace
+
+Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
+                                          const RelaxationParams& params) {
+  RelaxationResult r;
+  if (Status s = checkRelaxationInput(output, points, input); !s) return s;
+  if (params.iterations <= 0) return r;
+
+  const SurfaceWalker walker(input, params.featureAngleDegrees);
+  const std::vector<char> fixed = fixedVertices(output, points, walker);
+  for (const char f : fixed) r.fixedVertices += f;
+  Relaxer relaxer(output, points, walker, params.maxDeviation);
+  for (int it = 0; it < params.iterations; ++it) {
+    for (int v = 0; v < output.vertexCount(); ++v)
+      if (!fixed[v]) relaxer.relaxVertex(v);
+    // The output is manifold, oriented and has faces (checked above), and moves keep that.
+    Expected<DelaunayFlipResult> flipped = flipToDelaunay(output, params.flips);
+    if (!flipped) return flipped.status();
+    r.flips += flipped->flips;
     ++r.iterations;
   }
+  r.moves = relaxer.moves();
   return r;
 }
 

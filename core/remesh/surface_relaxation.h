@@ -54,8 +54,10 @@ struct RelaxationResult {
 };
 
 /// Relaxes `output` in place on the surface of `input`. `points[i]` is where output vertex i lies
-/// on the input (as DelaunayResult::origin) and is updated with it. Fails (InvalidInput) if
-/// the sizes disagree, a point is out of range, or either mesh is not manifold; then nothing changes.
+/// on the input (as DelaunayResult::origin) and is updated with it. Fails, changing nothing, with
+/// NonManifold if either mesh is not manifold, or InvalidInput if the sizes disagree, a point is
+/// out of range, the output has no faces or its faces are not oriented coherently (orient them
+/// first: orientCoherently in mesh/orientation.h).
 Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
                                           const RelaxationParams& params = {});
 

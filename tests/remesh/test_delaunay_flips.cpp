@@ -46,6 +46,13 @@ TriMesh randomDiagonalGrid(int n, double jitter, unsigned seed) {
   return buildTriMesh(p, t).value();
 }
 
+/// Flips to Delaunay, failing the test if the mesh is refused; the number of flips (-1 if refused).
+int flipCount(TriMesh& m, const DelaunayFlipParams& params = {}) {
+  const Expected<DelaunayFlipResult> r = flipToDelaunay(m, params);
+  EXPECT_TRUE(r) << r.status().message;
+  return r ? r->flips : -1;
+}
+
 /// Points strictly inside the circumcircle of some triangle (planar, z = 0), by brute force.
 int emptyCircleViolations(const TriMesh& m, double relTol) {
   int violations = 0;
@@ -68,8 +75,7 @@ TEST(DelaunayFlips, PlanarPointSetBecomesDelaunay) {
     const Topology before = m.topology;
     const int faces = m.faceCount();
     ASSERT_GT(emptyCircleViolations(m, 1e-9), 0) << "the fixture should start far from Delaunay";
-    const DelaunayFlipResult r = flipToDelaunay(m);
-    EXPECT_GT(r.flips, 0);
+    EXPECT_GT(flipCount(m), 0);
     EXPECT_EQ(emptyCircleViolations(m, 1e-6), 0) << "seed " << seed;
     EXPECT_EQ(m.faceCount(), faces);
     EXPECT_EQ(m.topology.components, before.components);
@@ -100,7 +106,7 @@ void expectAdjacencyAsIfRebuilt(const TriMesh& m) {
 
 TEST(DelaunayFlips, AdjacencyIsThatOfTheFlippedTriangles) {
   TriMesh grid = randomDiagonalGrid(20, 0.3, 5);  // open: boundary fans
-  EXPECT_GT(flipToDelaunay(grid).flips, 0);
+  EXPECT_GT(flipCount(grid), 0);
   expectAdjacencyAsIfRebuilt(grid);
   // Closed: a sphere whose vertices are jittered along it, so that many diagonals flip.
   TriMesh sphere = test::icosphere(3);
@@ -108,14 +114,14 @@ TEST(DelaunayFlips, AdjacencyIsThatOfTheFlippedTriangles) {
   std::uniform_real_distribution<double> u(-0.04, 0.04);
   for (Vec3& p : sphere.positions) p = (p + Vec3(u(rng), u(rng), u(rng))).normalized();
   sphere = buildTriMesh(sphere.positions, sphere.triangles).value();
-  EXPECT_GT(flipToDelaunay(sphere).flips, 0);
+  EXPECT_GT(flipCount(sphere), 0);
   expectAdjacencyAsIfRebuilt(sphere);
 }
 
 TEST(DelaunayFlips, MinimumAngleDoesNotDecrease) {
   TriMesh m = randomDiagonalGrid(30, 0.35, 7);
   const double before = angleStatistics(m).minDegrees;
-  flipToDelaunay(m);
+  EXPECT_GT(flipCount(m), 0);
   EXPECT_GE(angleStatistics(m).minDegrees, before);  // Delaunay maximises the smallest angle
 }
 
@@ -156,13 +162,13 @@ int creaseEdgesLeft(const TriMesh& m, int n) {
 TEST(DelaunayFlips, CreaseIsKept) {
   const int n = 10;
   TriMesh m = foldedStrip(n, 0.01);
-  flipToDelaunay(m);
+  EXPECT_GE(flipCount(m), 0);
   EXPECT_EQ(creaseEdgesLeft(m, n), n);
   // The fixture does test something: with the feature check disabled the crease is cut.
   TriMesh unchecked = foldedStrip(n, 0.01);
   DelaunayFlipParams params;
   params.featureAngleDegrees = 180.0;
-  flipToDelaunay(unchecked, params);
+  EXPECT_GT(flipCount(unchecked, params), 0);
   EXPECT_LT(creaseEdgesLeft(unchecked, n), n);
 }
 
@@ -195,7 +201,7 @@ TEST(DelaunayFlips, CapIsFlippedAway) {
     const int a = 0, b = 1, x = 2, y = 3, c = 4;
     TriMesh m = buildTriMesh(p, {{a, y, b}, {a, b, x}, {x, b, c}, {a, x, c}}).value();
     ASSERT_GT(largestAngleDegrees(m), 179.4);
-    EXPECT_GE(flipToDelaunay(m).flips, 1);
+    EXPECT_GE(flipCount(m), 1);
     EXPECT_LT(largestAngleDegrees(m), 91.0);
     EXPECT_EQ(m.faceCount(), 4);
     EXPECT_EQ(m.topology.inconsistentEdges, 0);
@@ -203,15 +209,35 @@ TEST(DelaunayFlips, CapIsFlippedAway) {
   }
 }
 
-TEST(DelaunayFlips, NonManifoldMeshIsLeftAlone) {
+/// flipToDelaunay refuses the mesh with `code` and leaves its triangles as they were.
+void expectRefused(TriMesh m, StatusCode code) {
+  const std::vector<Tri> before = m.triangles;
+  const Expected<DelaunayFlipResult> r = flipToDelaunay(m);
+  ASSERT_FALSE(r);
+  EXPECT_EQ(r.status().code, code) << r.status().message;
+  EXPECT_EQ(m.triangles, before);
+}
+
+TEST(DelaunayFlips, NonManifoldMeshIsRefusedAndLeftAlone) {
   // Three faces on one edge.
   std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}};
   std::vector<Tri> t = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
   TriMesh m = buildTriMesh(p, t).value();
-  const std::vector<Tri> before = m.triangles;
-  EXPECT_EQ(flipToDelaunay(m).flips, 0);
-  EXPECT_EQ(m.triangles, before);
+  ASSERT_FALSE(m.topology.isManifold());
+  expectRefused(m, StatusCode::NonManifold);
 }
+
+TEST(DelaunayFlips, InconsistentOrientationIsRefusedAndLeftAlone) {
+  // Two faces that both run 0 -> 1 along their shared edge, which is far from Delaunay (facing
+  // angles of about 127 degrees each).
+  const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0.5, 0.25, 0}, {0.5, -0.25, 0}};
+  TriMesh m = buildTriMesh(p, {{0, 1, 2}, {0, 1, 3}}).value();
+  ASSERT_TRUE(m.topology.isManifold());
+  ASSERT_GT(m.topology.inconsistentEdges, 0);
+  expectRefused(m, StatusCode::InvalidInput);
+}
+
+TEST(DelaunayFlips, MeshWithoutFacesIsRefused) { expectRefused(TriMesh(), StatusCode::InvalidInput); }
 
 }  // namespace
 }  // namespace gr

@@ -17,6 +17,15 @@ namespace {
 using test::Recount;
 using test::recount;
 
+/// The geodesic Delaunay triangulation of the farthest-point samples of `fps` (on one engine, the
+/// triangulation going on from the sampling's field), or why there is none.
+Expected<DelaunayResult> sampleAndTriangulate(const TriMesh& m, const FpsParams& fps) {
+  FastMarcher marcher(m, Metric::uniform());
+  const Expected<FpsResult> samples = farthestPointSampling(marcher, fps);
+  if (!samples) return samples.status();
+  return geodesicDelaunay(marcher, samples->origin);
+}
+
 /// (mesh, sample fraction, sub-vertex placement)
 class DelaunayOnClosedMeshes : public ::testing::TestWithParam<std::tuple<std::string, double, bool>> {};
 
@@ -28,10 +37,7 @@ TEST_P(DelaunayOnClosedMeshes, ManifoldOrientedSameTopology) {
   FpsParams fps;
   fps.targetCount = std::max(4, static_cast<int>(fraction * m.vertexCount()));
   fps.subVertexPlacement = subVertex;
-  FastMarcher marcher(m, Metric::uniform());
-  const auto samples = farthestPointSampling(marcher, fps);
-  ASSERT_TRUE(samples);
-  const auto r = geodesicDelaunay(marcher, samples->origin);
+  const auto r = sampleAndTriangulate(m, fps);
   ASSERT_TRUE(r) << r.status().message;
   const Recount out = recount(r->mesh.triangles, r->mesh.vertexCount());
   std::printf("%-14s %2.0f%%: %d samples + %d added in %d rounds -> %d vertices, %d faces; components %d/%d, genus %d/%d\n",
@@ -72,10 +78,7 @@ TEST_P(DelaunayWithBoundaries, BoundaryLoopsKept) {
   FpsParams fps;
   fps.targetCount = std::max(8, static_cast<int>(fraction * m.vertexCount()));
   fps.subVertexPlacement = subVertex;
-  FastMarcher marcher(m, Metric::uniform());
-  const auto samples = farthestPointSampling(marcher, fps);
-  ASSERT_TRUE(samples);
-  const auto r = geodesicDelaunay(marcher, samples->origin);
+  const auto r = sampleAndTriangulate(m, fps);
   ASSERT_TRUE(r) << r.status().message;
   const Recount out = recount(r->mesh.triangles, r->mesh.vertexCount());
   std::printf("%-22s %2.0f%%: %d samples + %d added in %d rounds; loops %d/%d, components %d/%d, genus %d/%d\n",
@@ -214,6 +217,28 @@ TEST(Delaunay, RejectsBadInput) {
     EXPECT_EQ(r.status().code, StatusCode::InvalidInput);
     EXPECT_NE(r.status().message.find("zero area"), std::string::npos) << r.status().message;
   }
+}
+
+TEST(Delaunay, RejectsNonManifoldInput) {
+  // Three faces on one edge (0, 1).
+  const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}};
+  const TriMesh m = buildTriMesh(p, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}).value();
+  ASSERT_FALSE(m.topology.isManifold());
+  const auto r = geodesicDelaunay(m, Metric::uniform(), {2, 3, 4});
+  ASSERT_FALSE(r);
+  EXPECT_EQ(r.status().code, StatusCode::NonManifold);
+}
+
+TEST(Delaunay, RejectsFacesNotOrientedCoherently) {
+  TriMesh m = test::icosphere(2);
+  std::vector<Tri> t = m.triangles;
+  std::swap(t[0][1], t[0][2]);  // one face turned over
+  m = buildTriMesh(m.positions, t).value();
+  ASSERT_TRUE(m.topology.isManifold());
+  ASSERT_GT(m.topology.inconsistentEdges, 0);
+  const auto r = geodesicDelaunay(m, Metric::uniform(), {0, 20, 40, 60});
+  ASSERT_FALSE(r);
+  EXPECT_EQ(r.status().code, StatusCode::InvalidInput);
 }
 
 }  // namespace

@@ -171,5 +171,53 @@ TEST(SurfaceRelaxation, BadInputIsReportedAndChangesNothing) {
   EXPECT_EQ(out.positions, d.mesh.positions);
 }
 
+/// Three faces on the edge (0, 1): a mesh that is not manifold.
+TriMesh threeFacesOnOneEdge() {
+  const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}};
+  return buildTriMesh(p, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}).value();
+}
+
+/// Output vertex i on input vertex i, for the first `count` vertices.
+std::vector<SurfacePoint> onFirstVertices(int count) {
+  std::vector<SurfacePoint> points;
+  for (int v = 0; v < count; ++v) points.push_back(SurfacePoint::atVertex(v));
+  return points;
+}
+
+TEST(SurfaceRelaxation, NonManifoldMeshesAreRefused) {
+  const TriMesh grid = test::planeGrid(4, 1.0, 0.3, 3);
+  // A non-manifold output on a manifold input.
+  TriMesh out = threeFacesOnOneEdge();
+  ASSERT_FALSE(out.topology.isManifold());
+  std::vector<SurfacePoint> points = onFirstVertices(out.vertexCount());
+  Expected<RelaxationResult> r = relaxOnSurface(out, points, grid);
+  ASSERT_FALSE(r);
+  EXPECT_EQ(r.status().code, StatusCode::NonManifold);
+  EXPECT_EQ(out.positions, threeFacesOnOneEdge().positions);
+  // A manifold output on a non-manifold input.
+  const TriMesh input = threeFacesOnOneEdge();
+  TriMesh triangle = buildTriMesh({input.positions[0], input.positions[1], input.positions[2]}, {{0, 1, 2}}).value();
+  points = onFirstVertices(3);
+  r = relaxOnSurface(triangle, points, input);
+  ASSERT_FALSE(r);
+  EXPECT_EQ(r.status().code, StatusCode::NonManifold);
+}
+
+TEST(SurfaceRelaxation, OutputNotOrientedCoherentlyIsRefused) {
+  const TriMesh input = test::planeGrid(30, 1.0, 0.3, 3);
+  const DelaunayResult d = triangulate(input, 80);
+  std::vector<Tri> t = d.mesh.triangles;
+  for (size_t f = 0; f < t.size(); f += 2) std::swap(t[f][1], t[f][2]);  // every other face turned over
+  TriMesh out = buildTriMesh(d.mesh.positions, t).value();
+  ASSERT_TRUE(out.topology.isManifold());
+  ASSERT_GT(out.topology.inconsistentEdges, 0);
+  std::vector<SurfacePoint> points = d.origin;
+  const Expected<RelaxationResult> r = relaxOnSurface(out, points, input);
+  ASSERT_FALSE(r);
+  EXPECT_EQ(r.status().code, StatusCode::InvalidInput);
+  EXPECT_EQ(out.positions, d.mesh.positions);
+  EXPECT_EQ(out.triangles, t);
+}
+
 }  // namespace
 }  // namespace gr

@@ -9,15 +9,15 @@
 namespace gr {
 namespace {
 
-/// Arrival time at vertex x of the front of region `region`, extended from x's neighbours in
-/// that region (edge and triangle updates on the final field).
+/// Arrival time at vertex x of the front of cell `c`, extended from x's neighbours in
+/// that cell (edge and triangle updates on the final field).
 double extendedArrival(const TriMesh& m, const std::vector<double>& P, const std::vector<double>& U,
-                       const std::vector<int>& label, int x, int region) {
+                       const std::vector<int>& cell, int x, int c) {
   double best = std::numeric_limits<double>::infinity();
   const Vec3& px = m.positions[x];
   for (const int* it = m.cornersBegin(x); it != m.cornersEnd(x); ++it) {
     const int a = m.vertex(TriMesh::next(*it)), b = m.vertex(TriMesh::prev(*it));
-    const bool inA = label[a] == region, inB = label[b] == region;
+    const bool inA = cell[a] == c, inB = cell[b] == c;
     const double la = (m.positions[a] - px).norm(), lb = (m.positions[b] - px).norm();
     if (inA) best = std::min(best, U[a] + 0.5 * (P[x] + P[a]) * la);
     if (inB) best = std::min(best, U[b] + 0.5 * (P[x] + P[b]) * lb);
@@ -30,15 +30,15 @@ double extendedArrival(const TriMesh& m, const std::vector<double>& P, const std
   return best;
 }
 
-/// Front `region`'s arrival at x extrapolated from its neighbour w along the front's direction:
+/// Front `c`'s arrival at x extrapolated from its neighbour w along the front's direction:
 /// U(w) + P * g.(x - w), with g the mean unit gradient of U over the faces around w that lie
-/// entirely in the region. +inf if there is no such face.
+/// entirely in the cell. +inf if there is no such face.
 double extrapolatedArrival(const TriMesh& m, const std::vector<double>& P, const std::vector<double>& U,
-                           const std::vector<int>& label, int w, int x, int region) {
+                           const std::vector<int>& cell, int w, int x, int c) {
   Vec3 direction = Vec3::Zero();
   for (const int* it = m.cornersBegin(w); it != m.cornersEnd(w); ++it) {
     const Tri& t = m.triangles[TriMesh::face(*it)];
-    if (label[t[0]] != region || label[t[1]] != region || label[t[2]] != region) continue;
+    if (cell[t[0]] != c || cell[t[1]] != c || cell[t[2]] != c) continue;
     const Vec3 e1 = m.positions[t[1]] - m.positions[t[0]], e2 = m.positions[t[2]] - m.positions[t[0]];
     const double a11 = e1.dot(e1), a12 = e1.dot(e2), a22 = e2.dot(e2), det = a11 * a22 - a12 * a12;
     if (!(det > 1e-14 * a11 * a22)) continue;
@@ -54,22 +54,22 @@ double extrapolatedArrival(const TriMesh& m, const std::vector<double>& P, const
 
 std::vector<VoronoiEdgePoint> voronoiBoundaryPoints(const TriMesh& mesh, const Metric& metric,
                                                     const std::vector<double>& distance,
-                                                    const std::vector<int>& label) {
+                                                    const std::vector<int>& cell) {
   const std::vector<double> P = metric.isUniform() ? std::vector<double>(mesh.vertexCount(), 1.0) : metric.P;
   std::vector<VoronoiEdgePoint> points;
   for (int c = 0; c < 3 * mesh.faceCount(); ++c) {
     const int v1 = mesh.vertex(TriMesh::next(c)), v2 = mesh.vertex(TriMesh::prev(c));
     const int o = mesh.oppositeCorner[c];
     if (o >= 0 && o < c) continue;  // each interior edge once
-    const int a = label[v1], b = label[v2];
+    const int a = cell[v1], b = cell[v2];
     if (a < 0 || b < 0 || a == b) continue;
     const double d1a = distance[v1], d2b = distance[v2];
-    // Each front continued one vertex past its region: from the neighbour across the edge when
-    // its faces show the front's direction, else from the region's triangles and edges at the vertex.
-    double d1b = extrapolatedArrival(mesh, P, distance, label, v2, v1, b);
-    double d2a = extrapolatedArrival(mesh, P, distance, label, v1, v2, a);
-    if (!std::isfinite(d1b)) d1b = extendedArrival(mesh, P, distance, label, v1, b);
-    if (!std::isfinite(d2a)) d2a = extendedArrival(mesh, P, distance, label, v2, a);
+    // Each front continued one vertex past its cell: from the neighbour across the edge when
+    // its faces show the front's direction, else from the cell's triangles and edges at the vertex.
+    double d1b = extrapolatedArrival(mesh, P, distance, cell, v2, v1, b);
+    double d2a = extrapolatedArrival(mesh, P, distance, cell, v1, v2, a);
+    if (!std::isfinite(d1b)) d1b = extendedArrival(mesh, P, distance, cell, v1, b);
+    if (!std::isfinite(d2a)) d2a = extendedArrival(mesh, P, distance, cell, v2, a);
     const double num = d1b - d1a, den = (d1b - d1a) + (d2a - d2b);
     double lambda = 0.5;
     if (std::isfinite(num) && std::isfinite(den) && den > 0.0) lambda = std::clamp(num / den, 0.0, 1.0);

@@ -45,8 +45,8 @@ void expectWellFormed(const TriMesh& m, const FastMarchingResult& r, const std::
     EXPECT_TRUE(got.insert(std::minmax(p.v1, p.v2)).second) << "edge reported twice";
     EXPECT_GE(p.lambda, 0.0);
     EXPECT_LE(p.lambda, 1.0);
-    EXPECT_EQ(p.label1, r.cell[p.v1]);
-    EXPECT_EQ(p.label2, r.cell[p.v2]);
+    EXPECT_EQ(p.cell1, r.cell[p.v1]);
+    EXPECT_EQ(p.cell2, r.cell[p.v2]);
   }
   EXPECT_EQ(got, expected);
 }

@@ -32,9 +32,9 @@ void declareFastMarching(const MeshModel& mesh, RichParameterList& params) {
   params.addParam(RichAbsPerc(param::kMaxDistance, 0.0f, 0.0f, diag, "Max distance",
                               "Stop the front at this distance (mesh units, or % of the bounding-box diagonal). "
                               "Vertices farther away are not reached and get quality -1. Default 0 = no limit."));
-  params.addParam(RichEnum(param::kColorBy, int(ColorBy::Distance), QStringList() << "Distance" << "Voronoi region",
+  params.addParam(RichEnum(param::kColorBy, int(ColorBy::Distance), QStringList() << "Distance" << "Voronoi cell",
                            "Color by",
-                           "Distance (default): a red-to-blue ramp over the distance. Voronoi region: one color per "
+                           "Distance (default): a red-to-blue ramp over the distance. Voronoi cell: one color per "
                            "source, each vertex colored by its nearest source (geodesic Voronoi diagram)."));
 }
 
@@ -62,8 +62,8 @@ Status applyFastMarching(MeshDocument& doc, const RichParameterList& params, Fil
   FastMarchingParams fmParams;
   if (maxDistance != 0.0) fmParams.maxDistance = maxDistance;  // 0 = no limit; the core checks the rest
   const int colorBy = params.getEnum(param::kColorBy);
-  if (colorBy != int(ColorBy::Distance) && colorBy != int(ColorBy::VoronoiRegion))
-    return invalidInput("ColorBy must be 0 (Distance) or 1 (Voronoi region), got " + std::to_string(colorBy));
+  if (colorBy != int(ColorBy::Distance) && colorBy != int(ColorBy::VoronoiCell))
+    return invalidInput("ColorBy must be 0 (Distance) or 1 (Voronoi cell), got " + std::to_string(colorBy));
 
   Expected<FastMarchingResult> result = fastMarchingWithSpeed(view.mesh, *speed, sources, fmParams, ctx.progress);
   if (!result) {

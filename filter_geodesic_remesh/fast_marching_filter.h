@@ -6,7 +6,7 @@
 namespace gr::filters {
 
 /// Values of the ColorBy enum, in the order of the RichEnum.
-enum class ColorBy { Distance = 0, VoronoiRegion = 1 };
+enum class ColorBy { Distance = 0, VoronoiCell = 1 };
 
 void declareFastMarching(const MeshModel& mesh, RichParameterList& params);
 Status applyFastMarching(MeshDocument& doc, const RichParameterList& params, FilterContext& ctx);

@@ -18,7 +18,7 @@ const std::vector<FilterSpec>& filterTable() {
        "triangles (Kimmel &amp; Sethian 1998), optionally weighted by a speed read from the vertex quality, "
        "and the geodesic Voronoi diagram of the selected vertices (nearest source of each vertex).<br>"
        "Writes the distance into the vertex quality (-1 where not reached) and colors the vertices by distance "
-       "or by Voronoi region.<br>See G. Peyr&eacute; and L. Cohen, <i>Geodesic Remeshing Using Front "
+       "or by Voronoi cell.<br>See G. Peyr&eacute; and L. Cohen, <i>Geodesic Remeshing Using Front "
        "Propagation</i>, IJCV 2006, &sect;2.1&ndash;2.2.",
        kQualityAndColorClass, kWritesQualityAndColor, declareFastMarching, applyFastMarching},
       {kUniformRemesh, "Remeshing: Geodesic Uniform",

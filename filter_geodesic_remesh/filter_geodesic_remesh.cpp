@@ -56,9 +56,11 @@ bool FilterGeodesicRemeshPlugin::applyFilter(QAction* action, MeshDocument& doc,
   try {
     status = s->apply(doc, params, ctx);
   } catch (const std::bad_alloc&) {
-    status = {gr::StatusCode::InvalidInput, "out of memory"};
+    status = gr::outOfMemory("out of memory");
   } catch (const std::exception& e) {
-    status = {gr::StatusCode::InvalidInput, std::string("internal error: ") + e.what()};
+    status = gr::internalError(std::string("internal error: ") + e.what());
+  } catch (...) {
+    status = gr::internalError("internal error: an exception of unknown type");
   }
   if (status) return true;
   // meshlabserver prints the log but not errorMessage: say it in both.

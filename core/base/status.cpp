@@ -10,6 +10,8 @@ const char* toString(StatusCode code) {
     case StatusCode::Degenerate: return "Degenerate";
     case StatusCode::NotConverged: return "NotConverged";
     case StatusCode::Cancelled: return "Cancelled";
+    case StatusCode::OutOfMemory: return "OutOfMemory";
+    case StatusCode::Internal: return "Internal";
   }
   return "Unknown";
 }

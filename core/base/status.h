@@ -17,6 +17,8 @@ enum class StatusCode {
   Degenerate,    ///< faces that repeat a vertex, or geometry the algorithm cannot use
   NotConverged,  ///< an iteration stopped before reaching its tolerance
   Cancelled,     ///< the user asked to stop (progress callback returned false)
+  OutOfMemory,   ///< an allocation failed (std::bad_alloc)
+  Internal,      ///< a broken invariant: a bug, not a property of the input
 };
 
 /// Short name of a code, for logs ("InvalidInput").
@@ -37,13 +39,19 @@ inline Status degenerate(std::string msg) { return {StatusCode::Degenerate, std:
 inline Status cancelled(std::string msg = "cancelled by the user") {
   return {StatusCode::Cancelled, std::move(msg)};
 }
+inline Status outOfMemory(std::string msg = "out of memory") { return {StatusCode::OutOfMemory, std::move(msg)}; }
+inline Status internalError(std::string msg) { return {StatusCode::Internal, std::move(msg)}; }
 
-/// A value of type T, or the Status saying why there is none.
+/// A value of type T, or the Status saying why there is none. An Expected made from a Status is
+/// always an error: given an OK status (no value and no error, a bug in the caller) it holds
+/// {Internal, "an Expected was given an OK status and no value (a bug)"}.
 template <class T>
 class Expected {
  public:
-  Expected(T value) : data_(std::move(value)) {}           // NOLINT: implicit on purpose
-  Expected(Status status) : data_(std::move(status)) {}    // NOLINT: implicit on purpose
+  Expected(T value) : data_(std::move(value)) {}  // NOLINT: implicit on purpose
+  Expected(Status status)                         // NOLINT: implicit on purpose
+      : data_(status.isOk() ? internalError("an Expected was given an OK status and no value (a bug)")
+                            : std::move(status)) {}
 
   bool hasValue() const { return std::holds_alternative<T>(data_); }
   explicit operator bool() const { return hasValue(); }

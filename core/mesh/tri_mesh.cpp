@@ -144,12 +144,10 @@ int countFans(const TriMesh& m, const std::vector<std::array<int, 2>>& others, i
   return fans;
 }
 
-void countTopology(TriMesh& m, const std::vector<std::array<int, 2>>& others) {
-  Topology& t = m.topology;
-  t = Topology{};
-  const int nv = m.vertexCount();
+/// Boundary edges, and manifold edges whose two faces disagree on orientation. Returns the number
+/// of corners facing a non-manifold edge.
+int countBoundaryAndInconsistentEdges(const TriMesh& m, Topology& t) {
   const int nc = 3 * m.faceCount();
-
   // Edges: each manifold edge is seen from two corners, others from one (boundary) or 3+.
   int nonManifoldCorners = 0;
   for (int c = 0; c < nc; ++c) {
@@ -163,23 +161,30 @@ void countTopology(TriMesh& m, const std::vector<std::array<int, 2>>& others) {
       if (m.vertex(TriMesh::next(c)) == m.vertex(TriMesh::next(o))) ++t.inconsistentEdges;
     }
   }
-  {  // Non-manifold edges: group their corners by (min, max) endpoint pair.
-    std::vector<std::pair<long long, int>> keys;
-    keys.reserve(nonManifoldCorners);
-    for (int c = 0; c < nc; ++c)
-      if (m.oppositeCorner[c] == kNonManifold) {
-        long long p = m.vertex(TriMesh::next(c)), q = m.vertex(TriMesh::prev(c));
-        if (p > q) std::swap(p, q);
-        keys.push_back({p * nv + q, c});
-      }
-    std::sort(keys.begin(), keys.end());
-    for (size_t i = 0; i < keys.size(); ++i)
-      if (i == 0 || keys[i].first != keys[i - 1].first) ++t.nonManifoldEdges;
-  }
+  return nonManifoldCorners;
+}
 
-  // Fans around each vertex: a vertex with more than one is not manifold.
+/// Non-manifold edges: their corners grouped by (min, max) endpoint pair.
+void countNonManifoldEdges(const TriMesh& m, int nonManifoldCorners, Topology& t) {
+  const int nv = m.vertexCount();
+  const int nc = 3 * m.faceCount();
+  std::vector<std::pair<long long, int>> keys;
+  keys.reserve(nonManifoldCorners);
+  for (int c = 0; c < nc; ++c)
+    if (m.oppositeCorner[c] == kNonManifold) {
+      long long p = m.vertex(TriMesh::next(c)), q = m.vertex(TriMesh::prev(c));
+      if (p > q) std::swap(p, q);
+      keys.push_back({p * nv + q, c});
+    }
+  std::sort(keys.begin(), keys.end());
+  for (size_t i = 0; i < keys.size(); ++i)
+    if (i == 0 || keys[i].first != keys[i - 1].first) ++t.nonManifoldEdges;
+}
+
+/// Isolated vertices, and non-manifold ones: a vertex with more than one fan of faces.
+void countNonManifoldVertices(const TriMesh& m, const std::vector<std::array<int, 2>>& others, Topology& t) {
   std::vector<int> scratch;
-  for (int v = 0; v < nv; ++v) {
+  for (int v = 0; v < m.vertexCount(); ++v) {
     if (m.valence(v) == 0) {
       ++t.isolatedVertices;
       continue;
@@ -189,8 +194,11 @@ void countTopology(TriMesh& m, const std::vector<std::array<int, 2>>& others) {
       t.nonManifoldVertexList.push_back(v);
     }
   }
+}
 
-  // Components over face-connected vertices.
+/// Components over face-connected vertices, numbered in order of their smallest vertex.
+void labelComponents(const TriMesh& m, Topology& t) {
+  const int nv = m.vertexCount();
   DisjointSets comps(nv);
   for (const Tri& tri : m.triangles) {
     comps.unite(tri[0], tri[1]);
@@ -204,8 +212,13 @@ void countTopology(TriMesh& m, const std::vector<std::array<int, 2>>& others) {
     if (id < 0) id = t.components++;
     t.componentOfVertex[v] = id;
   }
+}
 
-  // Boundary loops: boundary edges joined at their shared endpoints.
+/// Boundary loops: boundary edges joined at their shared endpoints. Returns the number of loops
+/// of each component.
+std::vector<int> countBoundaryLoops(const TriMesh& m, Topology& t) {
+  const int nv = m.vertexCount();
+  const int nc = 3 * m.faceCount();
   DisjointSets loops(nv);
   std::vector<char> onBoundary(nv, 0);
   for (int c = 0; c < nc; ++c)
@@ -222,9 +235,14 @@ void countTopology(TriMesh& m, const std::vector<std::array<int, 2>>& others) {
       ++t.boundaryLoops;
       ++loopsOfComponent[t.componentOfVertex[v]];
     }
+  return loopsOfComponent;
+}
 
-  // Euler characteristic per component: chi_i = V_i - E_i + F_i; genus_i = (2 - chi_i - b_i) / 2.
-  // A manifold edge is seen from two corners, a boundary edge from one.
+/// Euler characteristic per component: chi_i = V_i - E_i + F_i; genus_i = (2 - chi_i - b_i) / 2.
+/// A manifold edge is seen from two corners, a boundary edge from one.
+void countEulerCharacteristicAndGenus(const TriMesh& m, const std::vector<int>& loopsOfComponent, Topology& t) {
+  const int nv = m.vertexCount();
+  const int nc = 3 * m.faceCount();
   std::vector<long long> vCount(t.components, 0), fCount(t.components, 0), eTwice(t.components, 0);
   for (int v = 0; v < nv; ++v)
     if (t.componentOfVertex[v] >= 0) ++vCount[t.componentOfVertex[v]];
@@ -241,6 +259,17 @@ void countTopology(TriMesh& m, const std::vector<std::array<int, 2>>& others) {
   }
   // Non-manifold edges were left out of the per-component edge counts; subtract them globally.
   t.eulerCharacteristic = static_cast<int>(chiAll - t.nonManifoldEdges);
+}
+
+void countTopology(TriMesh& m, const std::vector<std::array<int, 2>>& others) {
+  Topology& t = m.topology;
+  t = Topology{};
+  const int nonManifoldCorners = countBoundaryAndInconsistentEdges(m, t);
+  countNonManifoldEdges(m, nonManifoldCorners, t);
+  countNonManifoldVertices(m, others, t);
+  labelComponents(m, t);
+  const std::vector<int> loopsOfComponent = countBoundaryLoops(m, t);
+  countEulerCharacteristicAndGenus(m, loopsOfComponent, t);
 }
 
 }  // namespace

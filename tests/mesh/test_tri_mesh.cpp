@@ -1,10 +1,10 @@
 // Tests of TriMesh: adjacency (opposite corners, vertex -> corner CSR) and topology counts.
 //
 // Oracles: (1) closed-form values of fixtures built in code (a tetrahedron has chi 2, a torus
-// chi 0, a grid n boundary edges 4n); (2) an independent recount in this file: edges kept in a
-// std::map, components by breadth-first search over the vertex graph, boundary loops by walking
-// boundary half-edges, fans by search over the faces around each vertex, real meshes re-read by a
-// small OFF parser of our own. None of these share code with core/mesh/tri_mesh.cpp.
+// chi 0, a grid n boundary edges 4n); (2) the independent recount of tests/support
+// (test::recount: edges kept in std::maps, each vertex's link checked to be one cycle or one path,
+// components and boundary loops by union-find of its own); (3) real meshes re-read by a small OFF
+// parser of our own. None of these share code with core/mesh/tri_mesh.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +12,6 @@
 #include <fstream>
 #include <limits>
 #include <map>
-#include <queue>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -27,157 +26,10 @@
 namespace gr {
 namespace {
 
-// ---------------------------------------------------------------------------------------------
-// Independent topology recount.
-
-struct RefTopology {
-  int usedVertices = 0;
-  int edges = 0;
-  int boundaryEdges = 0;
-  int nonManifoldEdges = 0;
-  int nonManifoldVertices = 0;
-  int isolatedVertices = 0;
-  int inconsistentEdges = 0;
-  int components = 0;
-  int boundaryLoops = 0;  ///< -1 if the boundary is not a disjoint union of simple oriented loops
-  int eulerCharacteristic = 0;
-  int genus = 0;  ///< sum over components of (2 - chi_i - b_i) / 2; valid when boundaryLoops >= 0
-  std::vector<int> componentOfVertex;  ///< labels of our own numbering; -1 for isolated vertices
-};
-
 using EdgeKey = std::pair<int, int>;
 EdgeKey key(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
 
-RefTopology recount(const std::vector<Vec3>& positions, const std::vector<Tri>& tris) {
-  RefTopology r;
-  const int nv = static_cast<int>(positions.size());
-  std::map<EdgeKey, int> faceCount;        // unordered edge -> number of faces
-  std::map<std::pair<int, int>, int> dirCount;  // directed edge a->b -> number of faces
-  std::vector<std::set<int>> neighbours(nv);
-  std::vector<std::vector<int>> facesAt(nv);
-  for (int f = 0; f < static_cast<int>(tris.size()); ++f) {
-    const Tri& t = tris[f];
-    for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      ++faceCount[key(a, b)];
-      ++dirCount[{a, b}];
-      neighbours[a].insert(b);
-      neighbours[b].insert(a);
-      facesAt[a].push_back(f);
-    }
-  }
-  r.edges = static_cast<int>(faceCount.size());
-  for (const auto& [e, n] : faceCount) {
-    if (n == 1) ++r.boundaryEdges;
-    if (n >= 3) ++r.nonManifoldEdges;
-    if (n == 2) {
-      // Consistent: one face runs a->b, the other b->a.
-      const int ab = dirCount.count({e.first, e.second}) ? dirCount[{e.first, e.second}] : 0;
-      if (ab != 1) ++r.inconsistentEdges;
-    }
-  }
-
-  // Components: breadth-first search over the vertex graph.
-  r.componentOfVertex.assign(nv, -1);
-  for (int s = 0; s < nv; ++s) {
-    if (facesAt[s].empty()) {
-      ++r.isolatedVertices;
-      continue;
-    }
-    ++r.usedVertices;
-    if (r.componentOfVertex[s] >= 0) continue;
-    std::queue<int> q;
-    q.push(s);
-    r.componentOfVertex[s] = r.components;
-    while (!q.empty()) {
-      const int v = q.front();
-      q.pop();
-      for (int w : neighbours[v])
-        if (r.componentOfVertex[w] < 0) {
-          r.componentOfVertex[w] = r.components;
-          q.push(w);
-        }
-    }
-    ++r.components;
-  }
-
-  // Fans: faces around v, adjacent when they share an edge through v that has exactly two faces.
-  for (int v = 0; v < nv; ++v) {
-    const std::vector<int>& fs = facesAt[v];
-    if (fs.empty()) continue;
-    std::vector<int> seen(fs.size(), 0);
-    int fans = 0;
-    for (size_t i = 0; i < fs.size(); ++i) {
-      if (seen[i]) continue;
-      ++fans;
-      std::vector<size_t> stack = {i};
-      seen[i] = 1;
-      while (!stack.empty()) {
-        const size_t a = stack.back();
-        stack.pop_back();
-        for (size_t b = 0; b < fs.size(); ++b) {
-          if (seen[b]) continue;
-          for (int x : tris[fs[a]]) {
-            if (x == v) continue;
-            const bool shared = std::find(tris[fs[b]].begin(), tris[fs[b]].end(), x) != tris[fs[b]].end();
-            if (shared && faceCount[key(v, x)] == 2) {
-              seen[b] = 1;
-              stack.push_back(b);
-              break;
-            }
-          }
-        }
-      }
-    }
-    if (fans > 1) ++r.nonManifoldVertices;
-  }
-
-  // Boundary loops: walk boundary half-edges (a->b of the only face on edge ab) head to tail.
-  // Every boundary vertex must have exactly one outgoing and one incoming boundary half-edge.
-  std::map<int, std::vector<int>> outgoing;
-  std::map<int, int> incoming;
-  for (const auto& [d, n] : dirCount)
-    if (faceCount[key(d.first, d.second)] == 1) {
-      outgoing[d.first].push_back(d.second);
-      ++incoming[d.second];
-    }
-  bool simple = true;
-  for (const auto& [v, out] : outgoing)
-    if (out.size() != 1 || incoming[v] != 1) simple = false;
-  for (const auto& [v, n] : incoming)
-    if (n != 1 || !outgoing.count(v)) simple = false;
-  std::vector<int> loopsOfComponent(r.components, 0);
-  if (simple) {
-    std::set<int> visited;
-    for (const auto& [start, out] : outgoing) {
-      if (visited.count(start)) continue;
-      int v = start;
-      do {
-        visited.insert(v);
-        v = outgoing[v][0];
-      } while (v != start);
-      ++r.boundaryLoops;
-      ++loopsOfComponent[r.componentOfVertex[start]];
-    }
-  } else {
-    r.boundaryLoops = -1;
-  }
-
-  // Euler characteristic and genus, per component.
-  std::vector<long> vc(r.components, 0), ec(r.components, 0), fc(r.components, 0);
-  for (int v = 0; v < nv; ++v)
-    if (r.componentOfVertex[v] >= 0) ++vc[r.componentOfVertex[v]];
-  for (const auto& [e, n] : faceCount) ++ec[r.componentOfVertex[e.first]];
-  for (const Tri& t : tris) ++fc[r.componentOfVertex[t[0]]];
-  for (int i = 0; i < r.components; ++i) {
-    const long chi = vc[i] - ec[i] + fc[i];
-    r.eulerCharacteristic += static_cast<int>(chi);
-    if (simple) r.genus += static_cast<int>((2 - chi - loopsOfComponent[i]) / 2);
-  }
-  return r;
-}
-
-RefTopology recount(const TriMesh& m) { return recount(m.positions, m.triangles); }
+test::Recount recount(const TriMesh& m) { return test::recount(m.triangles, m.vertexCount()); }
 
 /// Components are equal up to renumbering: same partition of the vertices, same isolated ones.
 void expectSamePartition(const std::vector<int>& got, const std::vector<int>& ref) {
@@ -193,25 +45,28 @@ void expectSamePartition(const std::vector<int>& got, const std::vector<int>& re
   }
 }
 
-/// Compares the code's topology with the recount. Loops and genus only when the recount could
-/// define them (the boundary is a union of simple oriented loops).
-void expectTopologyMatchesRecount(const TriMesh& m) {
-  SCOPED_TRACE("topology vs independent recount");
-  const RefTopology r = recount(m);
-  const Topology& t = m.topology;
+/// Compares the code's topology with an independent recount (of the mesh's triangles, or of the
+/// file's). Loops and genus only when the recount could define them (the boundary is a union of simple
+/// oriented loops).
+void expectTopologyMatches(const Topology& t, const test::Recount& r) {
   EXPECT_EQ(t.boundaryEdges, r.boundaryEdges);
   EXPECT_EQ(t.nonManifoldEdges, r.nonManifoldEdges);
   EXPECT_EQ(t.nonManifoldVertices, r.nonManifoldVertices);
-  EXPECT_EQ(t.isolatedVertices, r.isolatedVertices);
+  EXPECT_EQ(t.isolatedVertices, r.isolated);
   EXPECT_EQ(t.inconsistentEdges, r.inconsistentEdges);
   EXPECT_EQ(t.components, r.components);
   EXPECT_EQ(t.eulerCharacteristic, r.eulerCharacteristic);
-  if (r.boundaryLoops >= 0) {
+  if (r.simpleBoundary) {
     EXPECT_EQ(t.boundaryLoops, r.boundaryLoops);
-    EXPECT_EQ(t.genus, r.genus);
+    EXPECT_EQ(t.genus, r.genusSum);
   }
   expectSamePartition(t.componentOfVertex, r.componentOfVertex);
   EXPECT_EQ(t.isManifold(), r.nonManifoldEdges == 0 && r.nonManifoldVertices == 0);
+}
+
+void expectTopologyMatchesRecount(const TriMesh& m) {
+  SCOPED_TRACE("topology vs independent recount");
+  expectTopologyMatches(m.topology, recount(m));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -658,22 +513,12 @@ TEST_P(RealMesh, AdjacencyAndTopologyMatchAnIndependentRecount) {
   for (int f = 0; f < m.faceCount(); ++f) ASSERT_EQ(m.triangles[f], off.triangles[f]) << "face " << f;
 
   expectAdjacencyConsistent(m);
-  const RefTopology r = recount(off.positions, off.triangles);
-  const Topology& t = m.topology;
-  EXPECT_EQ(t.boundaryEdges, r.boundaryEdges);
-  EXPECT_EQ(t.nonManifoldEdges, r.nonManifoldEdges);
-  EXPECT_EQ(t.nonManifoldVertices, r.nonManifoldVertices);
-  EXPECT_EQ(t.isolatedVertices, r.isolatedVertices);
-  EXPECT_EQ(t.inconsistentEdges, r.inconsistentEdges);
-  EXPECT_EQ(t.components, r.components);
-  EXPECT_EQ(t.eulerCharacteristic, r.eulerCharacteristic);
-  ASSERT_GE(r.boundaryLoops, 0) << name << ": boundary is not a union of simple loops";
-  EXPECT_EQ(t.boundaryLoops, r.boundaryLoops);
-  EXPECT_EQ(t.genus, r.genus);
-  expectSamePartition(t.componentOfVertex, r.componentOfVertex);
+  const test::Recount r = test::recount(off.triangles, static_cast<int>(off.positions.size()));
+  ASSERT_TRUE(r.simpleBoundary) << name << ": boundary is not a union of simple loops";
+  expectTopologyMatches(m.topology, r);
   std::cout << "[ mesh     ] " << name << ": V " << m.vertexCount() << ", F " << m.faceCount() << ", components "
             << r.components << ", chi " << r.eulerCharacteristic << ", boundary loops " << r.boundaryLoops
-            << ", genus " << r.genus << "\n";
+            << ", genus " << r.genusSum << "\n";
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, RealMesh,
@@ -733,7 +578,7 @@ TEST(RealMeshTopology, EightIsADoubleTorus) {
 TEST(RealMeshTopology, MechHolesSharkHasBoundaries) {
   TriMesh m = test::loadRealMesh("mech-holes-shark.off");
   ASSERT_GT(m.vertexCount(), 0);
-  const RefTopology r = recount(m);
+  const test::Recount r = recount(m);
   EXPECT_GT(r.boundaryLoops, 0);
   EXPECT_EQ(m.topology.boundaryLoops, r.boundaryLoops);
   EXPECT_EQ(m.topology.boundaryEdges, r.boundaryEdges);
@@ -843,6 +688,16 @@ TEST(OrientCoherently, RestoresTheFlippedFacesOfEachComponent) {
   const Expected<TriMesh> again = orientCoherently(*o, &flipped);
   ASSERT_TRUE(again);
   EXPECT_EQ(std::count(flipped.begin(), flipped.end(), 1), 0);
+}
+
+TEST(OrientCoherently, RefusesNonManifoldEdgesWithNonManifold) {
+  // Edge 0-1 shared by three triangles.
+  const TriMesh m = build({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}},
+                          {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  ASSERT_EQ(m.topology.nonManifoldEdges, 1);
+  const Expected<TriMesh> o = orientCoherently(m);
+  ASSERT_FALSE(o);
+  EXPECT_EQ(o.status().code, StatusCode::NonManifold);
 }
 
 TEST(OrientCoherently, RefusesAMoebiusStrip) {

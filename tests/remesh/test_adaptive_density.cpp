@@ -24,9 +24,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <numeric>
-#include <set>
 #include <vector>
 
 #include "core/geodesic/farthest_point_sampling.h"
@@ -57,83 +55,6 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// Topology of a triangle soup, recounted independently of TriMesh: edges in at most two faces,
-/// each vertex's link one cycle or one path, components and boundary loops by union-find.
-struct Topology {
-  bool manifoldEdges = true;
-  bool oriented = true;
-  bool manifoldVertices = true;
-  int components = 0;
-  int boundaryLoops = 0;
-  int isolated = 0;
-};
-
-Topology recount(const std::vector<Tri>& tris, int nv) {
-  Topology r;
-  std::map<std::pair<int, int>, int> undirected, directed;
-  std::vector<std::vector<std::pair<int, int>>> link(nv);
-  for (const Tri& t : tris)
-    for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      ++undirected[std::minmax(a, b)];
-      if (++directed[{a, b}] > 1) r.oriented = false;
-      link[t[k]].push_back({b, t[(k + 2) % 3]});
-    }
-  for (const auto& [e, n] : undirected)
-    if (n > 2) r.manifoldEdges = false;
-  for (int v = 0; v < nv; ++v) {
-    if (link[v].empty()) {
-      ++r.isolated;
-      continue;
-    }
-    std::map<int, std::vector<int>> adj;
-    for (const auto& [a, b] : link[v]) {
-      adj[a].push_back(b);
-      adj[b].push_back(a);
-    }
-    int ends = 0;
-    bool ok = true;
-    for (const auto& [a, n] : adj) {
-      ok = ok && n.size() <= 2;
-      ends += n.size() == 1;
-    }
-    std::set<int> seen = {adj.begin()->first};
-    std::vector<int> stack = {adj.begin()->first};
-    while (!stack.empty()) {
-      const int a = stack.back();
-      stack.pop_back();
-      for (int b : adj[a])
-        if (seen.insert(b).second) stack.push_back(b);
-    }
-    if (!ok || (ends != 0 && ends != 2) || seen.size() != adj.size()) r.manifoldVertices = false;
-  }
-  std::vector<int> parent(nv), loop(nv);
-  std::iota(parent.begin(), parent.end(), 0);
-  std::iota(loop.begin(), loop.end(), 0);
-  const auto find = [](std::vector<int>& p, int x) {
-    while (p[x] != x) x = p[x] = p[p[x]];
-    return x;
-  };
-  for (const Tri& t : tris) {
-    parent[find(parent, t[0])] = find(parent, t[1]);
-    parent[find(parent, t[1])] = find(parent, t[2]);
-  }
-  std::set<int> roots, loopRoots;
-  for (int v = 0; v < nv; ++v)
-    if (!link[v].empty()) roots.insert(find(parent, v));
-  std::set<int> boundaryVertices;
-  for (const auto& [e, n] : undirected)
-    if (n == 1) {
-      loop[find(loop, e.first)] = find(loop, e.second);
-      boundaryVertices.insert(e.first);
-      boundaryVertices.insert(e.second);
-    }
-  for (int v : boundaryVertices) loopRoots.insert(find(loop, v));
-  r.components = static_cast<int>(roots.size());
-  r.boundaryLoops = static_cast<int>(loopRoots.size());
-  return r;
-}
-
 /// Number of samples whose position lies in [x0, x1) x [kMargin, 1 - kMargin].
 int countIn(const TriMesh& m, const std::vector<int>& samples, double x0, double x1) {
   int n = 0;
@@ -148,7 +69,7 @@ void expectValidDelaunay(const TriMesh& m, const Metric& metric, const std::vect
   const auto t0 = std::chrono::steady_clock::now();
   const auto d = geodesicDelaunay(m, metric, samples);
   ASSERT_TRUE(d) << d.status().message;
-  const Topology t = recount(d->mesh.triangles, d->mesh.vertexCount());
+  const test::Recount t = test::recount(d->mesh.triangles, d->mesh.vertexCount());
   std::printf("  Delaunay: %zu samples + %d added -> %d vertices, %d faces, %d loop(s), %d component(s), %.2f s\n",
               samples.size(), d->addedSamples, d->mesh.vertexCount(), d->mesh.faceCount(), t.boundaryLoops,
               t.components, secondsSince(t0));

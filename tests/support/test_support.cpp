@@ -177,89 +177,138 @@ TriMesh uvSphere(int nLat, int nLon, double r) {
 
 namespace gr::test {
 
+namespace {
+
+using EdgeCounts = std::map<std::pair<int, int>, int>;
+
+/// Edges: undirected ones by their number of faces (boundary, non-manifold), directed ones for the
+/// orientation (every directed edge once; a two-face edge run the same way by both faces).
+void recountEdges(const EdgeCounts& undirected, const EdgeCounts& directed, Recount& r) {
+  for (const auto& [e, n] : directed)
+    if (n > 1) r.oriented = false;
+  for (const auto& [e, n] : undirected) {
+    if (n != 2) r.closedManifoldEdges = false;
+    if (n > 2) r.manifoldEdges = false;
+    r.boundaryEdges += n == 1;
+    r.nonManifoldEdges += n > 2;
+    if (n == 2) {
+      const auto ab = directed.find(e);
+      if (ab == directed.end() || ab->second != 1) ++r.inconsistentEdges;
+    }
+  }
+}
+
+/// True if the link of a vertex (the edges opposite to it) is one cycle (interior vertex) or one
+/// path (boundary vertex): connected, degrees <= 2, and zero or two ends.
+bool linkIsOneCycleOrPath(const std::vector<std::pair<int, int>>& link) {
+  std::map<int, std::vector<int>> adj;
+  for (const auto& [a, b] : link) {
+    adj[a].push_back(b);
+    adj[b].push_back(a);
+  }
+  bool ok = true;
+  int ends = 0;
+  for (const auto& [a, n] : adj) {
+    ok = ok && n.size() <= 2;
+    ends += n.size() == 1;
+  }
+  ok = ok && (ends == 0 || ends == 2);
+  std::set<int> seen = {adj.begin()->first};
+  std::vector<int> stack = {adj.begin()->first};
+  while (!stack.empty()) {
+    const int a = stack.back();
+    stack.pop_back();
+    for (int b : adj[a])
+      if (seen.insert(b).second) stack.push_back(b);
+  }
+  return ok && seen.size() == adj.size();
+}
+
+/// Union-find with path halving over `parent`.
+int findRoot(std::vector<int>& parent, int x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+/// The boundary (edges with one face) is a disjoint union of simple loops: every vertex starts as
+/// many boundary half-edges as it ends, at most one.
+bool boundaryIsSimpleLoops(const EdgeCounts& undirected, const EdgeCounts& directed) {
+  std::map<int, int> out, in;
+  for (const auto& [d, n] : directed)
+    if (undirected.at(std::minmax(d.first, d.second)) == 1) {
+      out[d.first] += n;
+      in[d.second] += n;
+    }
+  for (const auto& [v, n] : out)
+    if (n != 1 || in[v] != 1) return false;
+  for (const auto& [v, n] : in)
+    if (n != 1 || out[v] != 1) return false;
+  return true;
+}
+
+}  // namespace
+
 Recount recount(const std::vector<Tri>& tris, int nv) {
   Recount r;
-  std::map<std::pair<int, int>, int> undirected, directed;
+  EdgeCounts undirected, directed;
   for (const Tri& t : tris)
     for (int k = 0; k < 3; ++k) {
       const int a = t[k], b = t[(k + 1) % 3];
       ++undirected[std::minmax(a, b)];
-      if (++directed[{a, b}] > 1) r.oriented = false;
+      ++directed[{a, b}];
     }
-  for (const auto& [e, n] : undirected) {
-    if (n != 2) r.closedManifoldEdges = false;
-    if (n > 2) r.manifoldEdges = false;
-  }
-  // Link of each vertex: the edges opposite to it; one cycle <=> connected with all degrees 2.
+  recountEdges(undirected, directed, r);
+  r.simpleBoundary = boundaryIsSimpleLoops(undirected, directed);
+  // Link of each vertex: the edges opposite to it.
   std::vector<std::vector<std::pair<int, int>>> link(nv);
   for (const Tri& t : tris)
     for (int k = 0; k < 3; ++k) link[t[k]].push_back({t[(k + 1) % 3], t[(k + 2) % 3]});
   for (int v = 0; v < nv; ++v) {
     if (link[v].empty()) {
       ++r.isolated;
-      continue;
+    } else if (!linkIsOneCycleOrPath(link[v])) {
+      r.manifoldVertices = false;
+      ++r.nonManifoldVertices;
     }
-    std::map<int, std::vector<int>> adj;
-    for (const auto& [a, b] : link[v]) {
-      adj[a].push_back(b);
-      adj[b].push_back(a);
-    }
-    // One cycle (interior vertex) or one path (boundary vertex): connected, degrees <= 2, and
-    // zero or two ends.
-    bool ok = true;
-    int ends = 0;
-    for (const auto& [a, n] : adj) {
-      ok = ok && n.size() <= 2;
-      ends += n.size() == 1;
-    }
-    ok = ok && (ends == 0 || ends == 2);
-    std::set<int> seen = {adj.begin()->first};
-    std::vector<int> stack = {adj.begin()->first};
-    while (!stack.empty()) {
-      const int a = stack.back();
-      stack.pop_back();
-      for (int b : adj[a])
-        if (seen.insert(b).second) stack.push_back(b);
-    }
-    if (!ok || seen.size() != adj.size()) r.manifoldVertices = false;
   }
   // Components (union-find over faces' vertices) and genus from chi = V - E + F = 2 - 2g.
   std::vector<int> parent(nv);
   std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
   for (const Tri& t : tris) {
-    parent[find(t[0])] = find(t[1]);
-    parent[find(t[1])] = find(t[2]);
+    parent[findRoot(parent, t[0])] = findRoot(parent, t[1]);
+    parent[findRoot(parent, t[1])] = findRoot(parent, t[2]);
   }
   std::map<int, long> chi;
   for (int v = 0; v < nv; ++v)
-    if (!link[v].empty()) ++chi[find(v)];
-  for (const auto& [e, n] : undirected) chi[find(e.first)] -= 1;
-  for (const Tri& t : tris) chi[find(t[0])] += 1;
+    if (!link[v].empty()) ++chi[findRoot(parent, v)];
+  for (const auto& [e, n] : undirected) chi[findRoot(parent, e.first)] -= 1;
+  for (const Tri& t : tris) chi[findRoot(parent, t[0])] += 1;
   // Boundary loops: boundary edges joined at shared endpoints (union-find of their own).
   std::vector<int> loop(nv);
   std::iota(loop.begin(), loop.end(), 0);
-  auto findLoop = [&](int x) {
-    while (loop[x] != x) x = loop[x] = loop[loop[x]];
-    return x;
-  };
   std::set<int> boundaryVertices;
   std::map<int, int> loopsOfComponent;
   for (const auto& [e, n] : undirected)
     if (n == 1) {
-      loop[findLoop(e.first)] = findLoop(e.second);
+      loop[findRoot(loop, e.first)] = findRoot(loop, e.second);
       boundaryVertices.insert(e.first);
       boundaryVertices.insert(e.second);
     }
   std::set<int> loopRoots;
   for (int v : boundaryVertices)
-    if (loopRoots.insert(findLoop(v)).second) ++loopsOfComponent[find(v)];
+    if (loopRoots.insert(findRoot(loop, v)).second) ++loopsOfComponent[findRoot(parent, v)];
   r.boundaryLoops = static_cast<int>(loopRoots.size());
   r.components = static_cast<int>(chi.size());
-  for (const auto& [root, c] : chi) r.genusSum += static_cast<int>((2 - c - loopsOfComponent[root]) / 2);
+  for (const auto& [root, c] : chi) {
+    r.eulerCharacteristic += static_cast<int>(c);
+    r.genusSum += static_cast<int>((2 - c - loopsOfComponent[root]) / 2);
+  }
+  // Component labels: the rank of the component's root among the roots.
+  std::map<int, int> labelOfRoot;
+  for (const auto& [root, c] : chi) labelOfRoot.emplace(root, static_cast<int>(labelOfRoot.size()));
+  r.componentOfVertex.assign(nv, -1);
+  for (int v = 0; v < nv; ++v)
+    if (!link[v].empty()) r.componentOfVertex[v] = labelOfRoot.at(findRoot(parent, v));
   return r;
 }
 

@@ -40,5 +40,14 @@ TEST(Subdivide, KeepsTopologyAndKnowsWhereEachVertexLies) {
   EXPECT_EQ(subdivideMidpoint(test::planeGrid(2), -1).status().code, StatusCode::InvalidInput);
 }
 
+TEST(Subdivide, RefusesNonManifoldEdgesWithNonManifold) {
+  // Edge 0-1 shared by three triangles (a book with three pages).
+  const auto m = buildTriMesh({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}},
+                              {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  ASSERT_TRUE(m) << m.status().message;
+  ASSERT_EQ(m->topology.nonManifoldEdges, 1);
+  for (int levels : {0, 1}) EXPECT_EQ(subdivideMidpoint(*m, levels).status().code, StatusCode::NonManifold);
+}
+
 }  // namespace
 }  // namespace gr

@@ -1,7 +1,8 @@
 #include "filter_geodesic_remesh/filter_geodesic_remesh.h"
 
-#include <exception>
-#include <new>
+#include <string>
+
+#include "filter_geodesic_remesh/filter_support.h"
 
 FilterGeodesicRemeshPlugin::FilterGeodesicRemeshPlugin() {
   for (const gr::filters::FilterSpec& s : gr::filters::filterTable()) typeList << s.id;
@@ -52,16 +53,7 @@ bool FilterGeodesicRemeshPlugin::applyFilter(QAction* action, MeshDocument& doc,
   ctx.warn = [this](const std::string& line) { Log(GLLogStream::WARNING, line); };
   if (cb != nullptr) ctx.progress = gr::Progress([cb](int percent, const char* msg) { return cb(percent, msg); });
 
-  gr::Status status;
-  try {
-    status = s->apply(doc, params, ctx);
-  } catch (const std::bad_alloc&) {
-    status = gr::outOfMemory("out of memory");
-  } catch (const std::exception& e) {
-    status = gr::internalError(std::string("internal error: ") + e.what());
-  } catch (...) {
-    status = gr::internalError("internal error: an exception of unknown type");
-  }
+  const gr::Status status = gr::filters::runCatchingExceptions([&] { return s->apply(doc, params, ctx); });
   if (status) return true;
   // meshlabserver prints the log but not errorMessage: say it in both.
   const std::string line = std::string(s->name) + " failed (" + gr::toString(status.code) + "): " + status.message;

@@ -4,6 +4,7 @@
 
 #include <common/interfaces.h>
 
+#include <functional>
 #include <string>
 
 #include "core/base/format.h"
@@ -18,5 +19,9 @@ struct CurrentMesh {
   adapters::CoreView view;
 };
 Expected<CurrentMesh> currentMesh(MeshDocument& doc);
+
+/// Runs `apply` and turns an exception escaping it into a Status, so that MeshLab never sees one:
+/// std::bad_alloc -> OutOfMemory ("out of memory"), any other -> Internal ("internal error: ...").
+Status runCatchingExceptions(const std::function<Status()>& apply);
 
 }  // namespace gr::filters

@@ -10,6 +10,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <new>
+#include <stdexcept>
 #include <set>
 #include <string>
 #include <vector>
@@ -23,6 +25,7 @@
 #include "core/remesh/remesh_surface.h"
 #include "vcg_adapters/cmesho_adapter.h"
 #include "filter_geodesic_remesh/filter_geodesic_remesh.h"
+#include "filter_geodesic_remesh/filter_support.h"
 #include "filter_geodesic_remesh/parameter_names.h"
 #include "tests/support/test_support.h"
 
@@ -119,6 +122,21 @@ class FilterInProcess : public ::testing::Test {
     EXPECT_TRUE(Snapshot(mm) == before) << "a failed filter changed the mesh";
   }
 };
+
+// An exception escaping a filter becomes a status (applyFilter runs every filter through
+// runCatchingExceptions): std::bad_alloc is OutOfMemory, anything else Internal (a bug).
+TEST(FilterExceptions, BecomeOutOfMemoryOrInternal) {
+  const Status oom = filters::runCatchingExceptions([]() -> Status { throw std::bad_alloc(); });
+  EXPECT_EQ(oom.code, StatusCode::OutOfMemory);
+  EXPECT_EQ(oom.message, "out of memory");
+  const Status bug = filters::runCatchingExceptions([]() -> Status { throw std::logic_error("index 7 out of range"); });
+  EXPECT_EQ(bug.code, StatusCode::Internal);
+  EXPECT_EQ(bug.message, "internal error: index 7 out of range") << "the message keeps what() for the bug report";
+  EXPECT_EQ(filters::runCatchingExceptions([]() -> Status { throw 42; }).code, StatusCode::Internal);
+  // Without an exception the filter's own status passes through.
+  EXPECT_TRUE(filters::runCatchingExceptions([] { return Status::ok(); }));
+  EXPECT_EQ(filters::runCatchingExceptions([] { return nonManifold("edge 1-2"); }).code, StatusCode::NonManifold);
+}
 
 TEST_F(FilterInProcess, FandiskMatchesCoreAndMarksQualityAndColor) {
   const TriMesh fandisk = test::loadRealMesh("fandisk.off");

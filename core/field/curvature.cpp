@@ -41,12 +41,16 @@ struct LocalMesh {
   double meanEdgeLength = 0.0;    ///< as TriMesh::meanEdgeLength(), same sums in the same order
 };
 
-LocalMesh buildLocalMesh(const TriMesh& mesh) {
+/// Local triangles: a face's vertices as local indices.
+using LocalTriangles = std::vector<std::array<int, 3>>;
+
+/// Numbers the vertices in the order the faces first reach them, isolated vertices last: fills
+/// local.original and local.point (ramp widths 0) and returns the faces in local indices.
+LocalTriangles renumberByFaces(const TriMesh& mesh, LocalMesh& local) {
   const int n = mesh.vertexCount();
   const int nf = mesh.faceCount();
-  LocalMesh local;
   std::vector<int> rank(n, -1);
-  std::vector<std::array<int, 3>> localTri(nf);
+  LocalTriangles localTri(nf);
   local.original.reserve(n);
   local.point.reserve(n);
   for (int f = 0; f < nf; ++f)
@@ -67,20 +71,24 @@ LocalMesh buildLocalMesh(const TriMesh& mesh) {
       const Vec3& p = mesh.positions[x];
       local.point.push_back({p.x(), p.y(), p.z(), 0.0});
     }
-  const std::vector<CellPoint>& point = local.point;
-  auto edge = [&](int from, int to) {
-    return Vec3(point[to].x - point[from].x, point[to].y - point[from].y, point[to].z - point[from].z);
-  };
+  return localTri;
+}
 
-  // Faces: a third of the area to each vertex, normals, the mean edge length.
-  local.mass.assign(n, CellMass{});
-  local.normal.assign(n, Vec3::Zero());
+/// The vector from local vertex `from` to `to`.
+Vec3 edgeVector(const std::vector<CellPoint>& point, int from, int to) {
+  return Vec3(point[to].x - point[from].x, point[to].y - point[from].y, point[to].z - point[from].z);
+}
+
+/// Faces: a third of the area to each vertex's mass, the cross products to the normals, the mean
+/// edge length. Returns the unit face normals (zero for a zero-area face).
+std::vector<Vec3> addFaces(const LocalTriangles& localTri, LocalMesh& local) {
+  const int nf = static_cast<int>(localTri.size());
   std::vector<Vec3> faceNormal(nf);
   double edgeSum = 0.0;
   for (int f = 0; f < nf; ++f) {
     const std::array<int, 3>& t = localTri[f];
-    for (int k = 0; k < 3; ++k) edgeSum += edge(t[(k + 1) % 3], t[k]).norm();
-    const Vec3 cross = edge(t[0], t[1]).cross(edge(t[0], t[2]));
+    for (int k = 0; k < 3; ++k) edgeSum += edgeVector(local.point, t[(k + 1) % 3], t[k]).norm();
+    const Vec3 cross = edgeVector(local.point, t[0], t[1]).cross(edgeVector(local.point, t[0], t[2]));
     const double norm = cross.norm();
     faceNormal[f] = norm > 0.0 ? Vec3(cross / norm) : Vec3::Zero();
     for (int k = 0; k < 3; ++k) {
@@ -89,17 +97,25 @@ LocalMesh buildLocalMesh(const TriMesh& mesh) {
     }
   }
   local.meanEdgeLength = edgeSum / (3.0 * nf);
+  return faceNormal;
+}
 
-  // Edges: half of beta |e| ê êᵀ to each end. Neighbours: the vertex after each corner in its
-  // face, and the one before when the edge to it is not shared consistently with another face
-  // (there, no other face has it after the corner).
+/// Is the edge (prev(c), V(c)) shared consistently, i.e. does another face have it after its corner?
+bool reachedBefore(const TriMesh& mesh, int c) {
+  const int o = mesh.oppositeCorner[TriMesh::next(c)];
+  return o >= 0 && mesh.vertex(TriMesh::next(o)) == mesh.vertex(c);
+}
+
+/// Edges: half of beta |e| ê êᵀ to each end's mass. Returns per local vertex how many neighbour
+/// entries it gets: the vertex after each corner in its face, and the one before when the edge to
+/// it is not shared consistently with another face (there, no other face has it after the corner).
+std::vector<int> addEdgesAndCountNeighbours(const TriMesh& mesh, const LocalTriangles& localTri,
+                                            const std::vector<Vec3>& faceNormal, LocalMesh& local) {
+  const int n = mesh.vertexCount();
+  const int nf = mesh.faceCount();
   std::vector<int> degree(n, 0);
-  auto reachedBefore = [&](int c) {  // is the edge (prev(c), V(c)) shared consistently?
-    const int o = mesh.oppositeCorner[TriMesh::next(c)];
-    return o >= 0 && mesh.vertex(TriMesh::next(o)) == mesh.vertex(c);
-  };
   for (int c = 0; c < 3 * nf; ++c) {
-    degree[localTri[TriMesh::face(c)][c % 3]] += reachedBefore(c) ? 1 : 2;
+    degree[localTri[TriMesh::face(c)][c % 3]] += reachedBefore(mesh, c) ? 1 : 2;
     const int o = mesh.oppositeCorner[c];
     if (o < c) continue;  // boundary (-1), non-manifold (-2), or the pair seen from the other side
     const Vec3& n1 = faceNormal[TriMesh::face(c)];
@@ -107,7 +123,7 @@ LocalMesh buildLocalMesh(const TriMesh& mesh) {
     if (n1.squaredNorm() == 0.0 || n2.squaredNorm() == 0.0) continue;  // zero-area face: no angle
     if (mesh.vertex(TriMesh::next(o)) == mesh.vertex(TriMesh::next(c))) n2 = -n2;  // faces disagree on orientation
     const int la = localTri[TriMesh::face(c)][(c + 1) % 3], lb = localTri[TriMesh::face(c)][(c + 2) % 3];
-    const Vec3 e = edge(la, lb);
+    const Vec3 e = edgeVector(local.point, la, lb);
     const double length = e.norm();
     if (length == 0.0) continue;
     // Convex (normal turning towards the direction of travel from f into g): (n1 x n2) . e > 0.
@@ -122,8 +138,32 @@ LocalMesh buildLocalMesh(const TriMesh& mesh) {
       mb.t[k] += m[k];
     }
   }
-  for (int v = 0; v < n; ++v) local.point[v].size = std::sqrt(local.mass[v].area);
+  return degree;
+}
 
+/// Drops the repeated entries of each vertex's neighbour list, keeping the first of each.
+void removeRepeatedNeighbours(LocalMesh& local) {
+  const int n = static_cast<int>(local.begin.size()) - 1;
+  int at = 0;
+  for (int v = 0; v < n; ++v) {
+    const int first = at;
+    for (int i = local.begin[v]; i < local.begin[v + 1]; ++i) {
+      const int x = local.list[i];
+      if (std::find(local.list.begin() + first, local.list.begin() + at, x) == local.list.begin() + at)
+        local.list[at++] = x;
+    }
+    local.begin[v] = first;
+  }
+  local.begin[n] = at;
+  local.list.resize(at);
+}
+
+/// The neighbour lists (local.begin, local.list) from the per-vertex entry counts, each
+/// neighbour once.
+void buildNeighbours(const TriMesh& mesh, const LocalTriangles& localTri, const std::vector<int>& degree,
+                     LocalMesh& local) {
+  const int n = mesh.vertexCount();
+  const int nf = mesh.faceCount();
   local.begin.assign(n + 1, 0);
   for (int v = 0; v < n; ++v) local.begin[v + 1] = local.begin[v] + degree[v];
   local.list.resize(local.begin[n]);
@@ -132,23 +172,23 @@ LocalMesh buildLocalMesh(const TriMesh& mesh) {
     const std::array<int, 3>& t = localTri[TriMesh::face(c)];
     const int v = t[c % 3];
     local.list[fill[v]++] = t[(c + 1) % 3];
-    if (!reachedBefore(c)) local.list[fill[v]++] = t[(c + 2) % 3];
+    if (!reachedBefore(mesh, c)) local.list[fill[v]++] = t[(c + 2) % 3];
   }
   // Boundaries, non-manifold edges and orientation flips can list a neighbour twice.
-  if (mesh.topology.boundaryEdges > 0 || !mesh.topology.isManifold() || mesh.topology.inconsistentEdges > 0) {
-    int at = 0;
-    for (int v = 0; v < n; ++v) {
-      const int first = at;
-      for (int i = local.begin[v]; i < local.begin[v + 1]; ++i) {
-        const int x = local.list[i];
-        if (std::find(local.list.begin() + first, local.list.begin() + at, x) == local.list.begin() + at)
-          local.list[at++] = x;
-      }
-      local.begin[v] = first;
-    }
-    local.begin[n] = at;
-    local.list.resize(at);
-  }
+  if (mesh.topology.boundaryEdges > 0 || !mesh.topology.isManifold() || mesh.topology.inconsistentEdges > 0)
+    removeRepeatedNeighbours(local);
+}
+
+LocalMesh buildLocalMesh(const TriMesh& mesh) {
+  const int n = mesh.vertexCount();
+  LocalMesh local;
+  const LocalTriangles localTri = renumberByFaces(mesh, local);
+  local.mass.assign(n, CellMass{});
+  local.normal.assign(n, Vec3::Zero());
+  const std::vector<Vec3> faceNormal = addFaces(localTri, local);
+  const std::vector<int> degree = addEdgesAndCountNeighbours(mesh, localTri, faceNormal, local);
+  for (int v = 0; v < n; ++v) local.point[v].size = std::sqrt(local.mass[v].area);
+  buildNeighbours(mesh, localTri, degree, local);
   return local;
 }
 
@@ -187,9 +227,111 @@ double squaredDistance(const CellPoint& a, const CellPoint& b) {
   return dx * dx + dy * dy + dz * dz;
 }
 
-}  // namespace
+/// Weight of a vertex at distance d in a ball of radius r: clamp(1/2 + (r - d) / size, 0, 1),
+/// positive for d < r + size / 2 (d < r where size = 0).
+double rampWeight(double r, double d, double size) {
+  return size > 0.0 ? std::min(1.0, 0.5 + (r - d) / size) : (d < r ? 1.0 : 0.0);
+}
 
-Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvatureParams& params, Progress progress) {
+/// The neighbourhood B(v) of the current vertex v: the local vertices in it (queue[0] = v) and
+/// their weights; the buffers are reused from vertex to vertex.
+struct Ball {
+  std::vector<int> seenBy;  ///< seenBy[u] == v: u was looked at in v's ball
+  std::vector<int> queue;
+  std::vector<double> weight;  ///< parallel to queue
+};
+
+/// Starts v's ball with v and its 1-ring, the ring's `weight` being its distances to v (turned
+/// into weights by weighOneRing). Returns the 1-ring's radius: the mean distance to the neighbours.
+double startWithOneRing(const LocalMesh& local, int v, Ball& ball) {
+  const std::vector<int>& begin = local.begin;
+  const CellPoint pv = local.point[v];
+  ball.queue.clear();
+  ball.weight.clear();
+  ball.seenBy[v] = v;
+  ball.queue.push_back(v);
+  ball.weight.push_back(1.0);
+  double ringRadius = 0.0;
+  for (int i = begin[v]; i < begin[v + 1]; ++i) {
+    const int x = local.list[i];
+    ball.seenBy[x] = v;
+    const double d = std::sqrt(squaredDistance(local.point[x], pv));
+    ringRadius += d;
+    ball.queue.push_back(x);
+    ball.weight.push_back(d);  // the distance, turned into the weight below
+  }
+  ringRadius /= begin[v + 1] - begin[v];
+  return ringRadius;
+}
+
+/// Turns the 1-ring's distances into weights for the ball radius r, dropping the neighbours of
+/// weight 0.
+void weighOneRing(const LocalMesh& local, double r, Ball& ball) {
+  std::vector<int>& queue = ball.queue;
+  std::vector<double>& weight = ball.weight;
+  size_t kept = 1;
+  for (size_t i = 1; i < queue.size(); ++i) {
+    const double w = rampWeight(r, weight[i], local.point[queue[i]].size);
+    if (!(w > 0.0)) continue;
+    queue[kept] = queue[i];
+    weight[kept++] = w;
+  }
+  queue.resize(kept);
+  weight.resize(kept);
+}
+
+/// Grows v's ball on from the 1-ring (a flood fill) through the vertices of positive weight.
+void growBall(const LocalMesh& local, int v, double r, Ball& ball) {
+  const std::vector<int>& begin = local.begin;
+  const std::vector<int>& list = local.list;
+  const std::vector<CellPoint>& point = local.point;
+  const CellPoint pv = point[v];
+  for (size_t head = 1; head < ball.queue.size(); ++head) {
+    const int u = ball.queue[head];
+    for (int i = begin[u]; i < begin[u + 1]; ++i) {
+      const int x = list[i];
+      if (ball.seenBy[x] == v) continue;
+      ball.seenBy[x] = v;
+      const CellPoint& px = point[x];
+      const double reach = r + 0.5 * px.size;
+      const double d2 = squaredDistance(px, pv);
+      if (!(d2 < reach * reach)) continue;
+      const double w = rampWeight(r, std::sqrt(d2), px.size);
+      if (!(w > 0.0)) continue;
+      ball.queue.push_back(x);
+      ball.weight.push_back(w);
+    }
+  }
+}
+
+/// The principal curvatures k1 (larger magnitude), k2 of v from its ball's tensor; false when
+/// the ball has no area (only zero-area faces around: no curvature).
+bool principalCurvatures(const LocalMesh& local, int v, const Ball& ball,
+                         Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& solver, double& k1, double& k2) {
+  double t[6] = {0, 0, 0, 0, 0, 0};
+  double area = 0.0;
+  for (size_t i = 0; i < ball.queue.size(); ++i) {
+    const CellMass& cm = local.mass[ball.queue[i]];
+    const double w = ball.weight[i];
+    for (int k = 0; k < 6; ++k) t[k] += w * cm.t[k];
+    area += w * cm.area;
+  }
+  if (!(area > 0.0)) return false;
+  Eigen::Matrix3d tensor;
+  tensor << t[0], t[1], t[2], t[1], t[3], t[4], t[2], t[4], t[5];
+  tensor /= area;
+  solver.computeDirect(tensor, Eigen::EigenvaluesOnly);
+  const Eigen::Vector3d lambda = solver.eigenvalues();
+  const int dropped = droppedEigenvalue(tensor, lambda, local.normal[v]);
+  double a = lambda[(dropped + 1) % 3], b = lambda[(dropped + 2) % 3];
+  if (std::abs(a) < std::abs(b)) std::swap(a, b);
+  k1 = a;
+  k2 = b;
+  return true;
+}
+
+/// The checks of totalCurvature's input: a mesh with faces and adjacency, a usable radius.
+Status checkCurvatureInput(const TriMesh& mesh, const CurvatureParams& params) {
   const int n = mesh.vertexCount();
   if (n == 0 || mesh.faceCount() == 0) return invalidInput("the mesh has no vertices or no faces");
   if (mesh.oppositeCorner.size() != 3 * mesh.triangles.size() ||
@@ -198,11 +340,16 @@ Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvaturePar
   if (!std::isfinite(params.radius) || params.radius < 0.0)
     return invalidInput("the curvature radius must be finite and >= 0 (0 = the mean edge length), got " +
                         std::to_string(params.radius));
+  return Status::ok();
+}
+
+}  // namespace
+
+Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvatureParams& params, Progress progress) {
+  if (Status s = checkCurvatureInput(mesh, params); !s) return s;
+  const int n = mesh.vertexCount();
   const LocalMesh local = buildLocalMesh(mesh);
   const double radius = params.radius > 0.0 ? params.radius : local.meanEdgeLength;
-  const std::vector<int>& begin = local.begin;
-  const std::vector<int>& list = local.list;
-  const std::vector<CellPoint>& point = local.point;
 
   CurvatureResult result;
   result.radius = radius;
@@ -210,83 +357,23 @@ Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvaturePar
   result.k1.assign(n, 0.0);
   result.k2.assign(n, 0.0);
 
-  std::vector<int> seenBy(n, -1);  // seenBy[u] == v: u was looked at in v's ball
-  std::vector<int> queue;
-  std::vector<double> weight;      // parallel to queue
+  Ball ball;
+  ball.seenBy.assign(n, -1);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   long totalSize = 0;
   for (int v = 0; v < n; ++v) {
     if ((v & 4095) == 0 && !progress.report(double(v) / n, "Curvature")) return cancelled();
-    if (begin[v] == begin[v + 1]) continue;  // isolated vertex
-    const CellPoint pv = point[v];
+    if (local.begin[v] == local.begin[v + 1]) continue;  // isolated vertex
     // The 1-ring: its distances give the ball's radius, the requested one or the 1-ring's (mean
     // distance to the neighbours).
-    queue.clear();
-    weight.clear();
-    seenBy[v] = v;
-    queue.push_back(v);
-    weight.push_back(1.0);
-    double ringRadius = 0.0;
-    for (int i = begin[v]; i < begin[v + 1]; ++i) {
-      const int x = list[i];
-      seenBy[x] = v;
-      const double d = std::sqrt(squaredDistance(point[x], pv));
-      ringRadius += d;
-      queue.push_back(x);
-      weight.push_back(d);  // the distance, turned into the weight below
-    }
-    ringRadius /= begin[v + 1] - begin[v];
+    const double ringRadius = startWithOneRing(local, v, ball);
     const double r = std::max(radius, ringRadius);
     if (radius <= ringRadius) ++result.oneRingRadius;
-    // Weights w = clamp(1/2 + (r - d) / s, 0, 1): positive for d < r + s / 2 (d < r where s = 0).
-    auto weightAt = [r](double d, double size) {
-      return size > 0.0 ? std::min(1.0, 0.5 + (r - d) / size) : (d < r ? 1.0 : 0.0);
-    };
-    size_t kept = 1;
-    for (size_t i = 1; i < queue.size(); ++i) {
-      const double w = weightAt(weight[i], point[queue[i]].size);
-      if (!(w > 0.0)) continue;
-      queue[kept] = queue[i];
-      weight[kept++] = w;
-    }
-    queue.resize(kept);
-    weight.resize(kept);
-    // Flood fill on from the 1-ring through the vertices of positive weight.
-    for (size_t head = 1; head < queue.size(); ++head) {
-      const int u = queue[head];
-      for (int i = begin[u]; i < begin[u + 1]; ++i) {
-        const int x = list[i];
-        if (seenBy[x] == v) continue;
-        seenBy[x] = v;
-        const CellPoint& px = point[x];
-        const double reach = r + 0.5 * px.size;
-        const double d2 = squaredDistance(px, pv);
-        if (!(d2 < reach * reach)) continue;
-        const double w = weightAt(std::sqrt(d2), px.size);
-        if (!(w > 0.0)) continue;
-        queue.push_back(x);
-        weight.push_back(w);
-      }
-    }
-    totalSize += static_cast<long>(queue.size());
-
-    double t[6] = {0, 0, 0, 0, 0, 0};
-    double area = 0.0;
-    for (size_t i = 0; i < queue.size(); ++i) {
-      const CellMass& cm = local.mass[queue[i]];
-      const double w = weight[i];
-      for (int k = 0; k < 6; ++k) t[k] += w * cm.t[k];
-      area += w * cm.area;
-    }
-    if (!(area > 0.0)) continue;  // only zero-area faces around: no curvature
-    Eigen::Matrix3d tensor;
-    tensor << t[0], t[1], t[2], t[1], t[3], t[4], t[2], t[4], t[5];
-    tensor /= area;
-    solver.computeDirect(tensor, Eigen::EigenvaluesOnly);
-    const Eigen::Vector3d lambda = solver.eigenvalues();
-    const int dropped = droppedEigenvalue(tensor, lambda, local.normal[v]);
-    double a = lambda[(dropped + 1) % 3], b = lambda[(dropped + 2) % 3];
-    if (std::abs(a) < std::abs(b)) std::swap(a, b);
+    weighOneRing(local, r, ball);
+    growBall(local, v, r, ball);
+    totalSize += static_cast<long>(ball.queue.size());
+    double a, b;
+    if (!principalCurvatures(local, v, ball, solver, a, b)) continue;
     const int original = local.original[v];
     result.k1[original] = a;
     result.k2[original] = b;

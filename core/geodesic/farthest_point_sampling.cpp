@@ -68,6 +68,105 @@ SurfacePoint farthestPointNear(const FastMarcher& marcher, int v, const std::vec
   return bestPoint;
 }
 
+/// Vertices in faces: the most samples a mesh can take.
+int usableVertexCount(const TriMesh& mesh) { return mesh.vertexCount() - mesh.topology.isolatedVertices; }
+
+/// The checks of the sampling's parameters, in the order their messages are reported.
+Status checkFpsParams(const TriMesh& mesh, const FpsParams& params) {
+  if (params.targetCount < 0) return invalidInput("the target sample count must be >= 0");
+  if (!(params.minSpacing >= 0.0) || !std::isfinite(params.minSpacing))
+    return invalidInput("the sample spacing must be finite and >= 0");
+  if (params.targetCount == 0 && params.minSpacing == 0.0)
+    return invalidInput("give a target sample count or a spacing (both are 0)");
+  const int usable = usableVertexCount(mesh);
+  if (params.targetCount > usable)
+    return invalidInput("cannot place " + std::to_string(params.targetCount) + " samples on " +
+                        std::to_string(usable) + " vertices");
+  if (!(params.boundaryPriority >= 1.0) || !std::isfinite(params.boundaryPriority))
+    return invalidInput("the boundary priority must be finite and >= 1");
+  return Status::ok();
+}
+
+/// Per vertex, 1 if it is an end of a boundary edge.
+std::vector<char> boundaryVertexFlags(const TriMesh& mesh) {
+  std::vector<char> onBoundary(mesh.vertexCount(), 0);
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
+    if (mesh.oppositeCorner[c] == kBoundary) onBoundary[mesh.vertex(TriMesh::next(c))] = onBoundary[mesh.vertex(TriMesh::prev(c))] = 1;
+  return onBoundary;
+}
+
+/// The first sample: the vertex farthest from a start vertex in a face chosen by `seed`. Leaves
+/// the marcher reset.
+Expected<int> firstSample(FastMarcher& marcher, unsigned seed) {
+  const TriMesh& mesh = marcher.mesh();
+  marcher.reset();
+  int start = static_cast<int>(seed % static_cast<unsigned>(mesh.vertexCount()));
+  while (mesh.valence(start) == 0) start = (start + 1) % mesh.vertexCount();
+  if (Status s = marcher.addSource(start, 0); !s) return s;
+  if (Status s = marcher.propagate(); !s) return s;
+  int first = start;
+  for (int v : marcher.acceptedOrder())
+    if (marcher.distance()[v] > marcher.distance()[first]) first = v;
+  marcher.reset();
+  return first;
+}
+
+/// The lowest vertex of each component other than `first`'s, the next one to take at the back.
+std::vector<int> firstVerticesOfOtherComponents(const TriMesh& mesh, int first) {
+  std::vector<int> firstOfComponent(mesh.topology.components, -1);
+  for (int v = mesh.vertexCount() - 1; v >= 0; --v)
+    if (mesh.topology.componentOfVertex[v] >= 0) firstOfComponent[mesh.topology.componentOfVertex[v]] = v;
+  std::vector<int> pending;
+  for (int c = 0; c < mesh.topology.components; ++c)
+    if (c != mesh.topology.componentOfVertex[first]) pending.push_back(firstOfComponent[c]);
+  std::reverse(pending.begin(), pending.end());
+  return pending;
+}
+
+/// U at the top of a queue; 0 when it is empty.
+double topU(FarthestQueue& queue, const std::vector<double>& U) {
+  const int v = queue.top();
+  return v < 0 ? 0.0 : U[v];
+}
+
+/// Adds the sample chosen at vertex `next` (U_n = nextU there) to `r` and to the marcher, at the
+/// farthest point near it if asked, and propagates its front.
+Status addSample(FastMarcher& marcher, const FpsParams& params, const std::vector<char>& onBoundary, int next,
+                 double nextU, FpsResult& r, std::vector<Vec3>& samplePosition) {
+  const TriMesh& mesh = marcher.mesh();
+  SurfacePoint point = SurfacePoint::atVertex(next);
+  if (params.subVertexPlacement && std::isfinite(nextU) && !onBoundary[next])
+    point = farthestPointNear(marcher, next, samplePosition, &nextU);
+  r.samples.push_back(next);
+  r.origin.push_back(point);
+  samplePosition.push_back(point.position(mesh));
+  r.insertionDistance.push_back(nextU);
+  if (Status s = marcher.addSource(point, static_cast<int>(r.samples.size()) - 1); !s) return s;
+  if (Status s = marcher.propagate(); !s) return s;
+  if (point.vertex < 0 && marcher.acceptedOrder().empty()) {
+    // A point that is nearest to no vertex would have an empty Voronoi cell, and no place in
+    // the triangulation: the sample goes back to the farthest vertex (the field is unchanged).
+    r.origin.back() = SurfacePoint::atVertex(next);
+    samplePosition.back() = mesh.positions[next];
+    if (Status s = marcher.addSource(next, static_cast<int>(r.samples.size()) - 1); !s) return s;
+    if (Status s = marcher.propagate(); !s) return s;
+  }
+  return Status::ok();
+}
+
+/// Picks the next sample, the farthest interior or (with priority) boundary vertex, into `next`
+/// and `nextU`; false when sampling should stop (every vertex is a sample, or the spacing is reached).
+bool pickFarthest(const std::vector<double>& U, const FpsParams& params, FarthestQueue& farthest,
+                  FarthestQueue& farthestOnBoundary, int& next, double& nextU) {
+  const double interiorU = topU(farthest, U), boundaryU = topU(farthestOnBoundary, U);
+  if (std::max(interiorU, boundaryU) <= 0.0) return false;  // every vertex is a sample
+  if (params.minSpacing > 0.0 && std::max(interiorU, boundaryU) < params.minSpacing) return false;
+  const bool boundaryFirst = boundaryU > 0.0 && boundaryU * params.boundaryPriority >= interiorU;
+  next = boundaryFirst ? farthestOnBoundary.top() : farthest.top();
+  nextU = boundaryFirst ? boundaryU : interiorU;
+  return true;
+}
+
 }  // namespace
 
 Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& metric, const FpsParams& params,
@@ -80,41 +179,14 @@ Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& met
 
 Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams& params, Progress progress) {
   const TriMesh& mesh = marcher.mesh();
-  if (params.targetCount < 0) return invalidInput("the target sample count must be >= 0");
-  if (!(params.minSpacing >= 0.0) || !std::isfinite(params.minSpacing))
-    return invalidInput("the sample spacing must be finite and >= 0");
-  if (params.targetCount == 0 && params.minSpacing == 0.0)
-    return invalidInput("give a target sample count or a spacing (both are 0)");
-  const int usable = mesh.vertexCount() - mesh.topology.isolatedVertices;
-  if (params.targetCount > usable)
-    return invalidInput("cannot place " + std::to_string(params.targetCount) + " samples on " +
-                        std::to_string(usable) + " vertices");
-  if (!(params.boundaryPriority >= 1.0) || !std::isfinite(params.boundaryPriority))
-    return invalidInput("the boundary priority must be finite and >= 1");
-  std::vector<char> onBoundary(mesh.vertexCount(), 0);
-  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
-    if (mesh.oppositeCorner[c] == kBoundary) onBoundary[mesh.vertex(TriMesh::next(c))] = onBoundary[mesh.vertex(TriMesh::prev(c))] = 1;
-
-  marcher.reset();
-  // Start: the vertex farthest from a seeded vertex of a face.
-  int start = static_cast<int>(params.seed % static_cast<unsigned>(mesh.vertexCount()));
-  while (mesh.valence(start) == 0) start = (start + 1) % mesh.vertexCount();
-  if (Status s = marcher.addSource(start, 0); !s) return s;
-  if (Status s = marcher.propagate(); !s) return s;
-  int first = start;
-  for (int v : marcher.acceptedOrder())
-    if (marcher.distance()[v] > marcher.distance()[first]) first = v;
-  marcher.reset();
-
+  if (Status s = checkFpsParams(mesh, params); !s) return s;
+  const int usable = usableVertexCount(mesh);
+  const std::vector<char> onBoundary = boundaryVertexFlags(mesh);
+  const Expected<int> first = firstSample(marcher, params.seed);
+  if (!first) return first.status();
   // Components other than the start's have U = +inf: each gets a first sample (its lowest
   // vertex) before any component gets a second one.
-  std::vector<int> firstOfComponent(mesh.topology.components, -1);
-  for (int v = mesh.vertexCount() - 1; v >= 0; --v)
-    if (mesh.topology.componentOfVertex[v] >= 0) firstOfComponent[mesh.topology.componentOfVertex[v]] = v;
-  std::vector<int> pending;
-  for (int c = 0; c < mesh.topology.components; ++c)
-    if (c != mesh.topology.componentOfVertex[first]) pending.push_back(firstOfComponent[c]);
-  std::reverse(pending.begin(), pending.end());
+  std::vector<int> pending = firstVerticesOfOtherComponents(mesh, *first);
 
   FpsResult r;
   const std::vector<double>& U = marcher.distance();
@@ -122,32 +194,12 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
   // exactly, only scanned more slowly (farthest_queue.h).
   const double floor = std::max(1e-9 * mesh.boundingBoxDiagonal(), 1e-300);
   FarthestQueue farthest(U, floor), farthestOnBoundary(U, floor);
-  const auto topU = [&U](FarthestQueue& queue) {
-    const int v = queue.top();
-    return v < 0 ? 0.0 : U[v];
-  };
   const int cap = params.targetCount > 0 ? params.targetCount : usable;
-  int next = first;
+  int next = *first;
   double nextU = kUnreached;
   std::vector<Vec3> samplePosition;
   for (;;) {
-    SurfacePoint point = SurfacePoint::atVertex(next);
-    if (params.subVertexPlacement && std::isfinite(nextU) && !onBoundary[next])
-      point = farthestPointNear(marcher, next, samplePosition, &nextU);
-    r.samples.push_back(next);
-    r.origin.push_back(point);
-    samplePosition.push_back(point.position(mesh));
-    r.insertionDistance.push_back(nextU);
-    if (Status s = marcher.addSource(point, static_cast<int>(r.samples.size()) - 1); !s) return s;
-    if (Status s = marcher.propagate(); !s) return s;
-    if (point.vertex < 0 && marcher.acceptedOrder().empty()) {
-      // A point that is nearest to no vertex would have an empty Voronoi cell, and no place in
-      // the triangulation: the sample goes back to the farthest vertex (the field is unchanged).
-      r.origin.back() = SurfacePoint::atVertex(next);
-      samplePosition.back() = mesh.positions[next];
-      if (Status s = marcher.addSource(next, static_cast<int>(r.samples.size()) - 1); !s) return s;
-      if (Status s = marcher.propagate(); !s) return s;
-    }
+    if (Status s = addSample(marcher, params, onBoundary, next, nextU, r, samplePosition); !s) return s;
     for (int v : marcher.acceptedOrder()) (onBoundary[v] ? farthestOnBoundary : farthest).update(v);
     if (static_cast<int>(r.samples.size()) >= cap) break;
     if (!progress.report(double(r.samples.size()) / cap, "Farthest point sampling")) return cancelled();
@@ -157,14 +209,9 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
       nextU = kUnreached;
       continue;
     }
-    const double interiorU = topU(farthest), boundaryU = topU(farthestOnBoundary);
-    if (std::max(interiorU, boundaryU) <= 0.0) break;  // every vertex is a sample
-    if (params.minSpacing > 0.0 && std::max(interiorU, boundaryU) < params.minSpacing) break;
-    const bool boundaryFirst = boundaryU > 0.0 && boundaryU * params.boundaryPriority >= interiorU;
-    next = boundaryFirst ? farthestOnBoundary.top() : farthest.top();
-    nextU = boundaryFirst ? boundaryU : interiorU;
+    if (!pickFarthest(U, params, farthest, farthestOnBoundary, next, nextU)) break;
   }
-  r.coveringRadius = std::max(topU(farthest), topU(farthestOnBoundary));
+  r.coveringRadius = std::max(topU(farthest, U), topU(farthestOnBoundary, U));
   r.distance = U;
   r.cell = marcher.cell();
   return r;

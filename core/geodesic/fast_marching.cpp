@@ -26,6 +26,26 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh
   // with deferred allowed too, libstdc++ runs it in get() when no thread can be started.)
   std::future<AcuteSplits> splitter =
       std::async(std::launch::async | std::launch::deferred, [&mesh] { return findAcuteSplits(mesh); });
+  orderSlotsBreadthFirst();
+  P_.assign(nv, 1.0);
+  if (!metric.isUniform())
+    for (int i = 0; i < nv; ++i) P_[i] = metric.P[vertexOf_[i]];
+  const AcuteSplits splits = splitter.get();
+  buildStars(splits);
+  if (!uniform_) buildStarCosts();
+  buildSplitRecords(splits);
+  node_.assign(nv, Node{kUnreached, 0, -1});
+  U_.assign(nv, kUnreached);
+  cell_.assign(nv, -1);
+  touched_.reserve(nv);
+  accepted_.reserve(nv);
+  acceptedVertices_.reserve(nv);
+  heap_.resize(nv);
+}
+
+void FastMarcher::orderSlotsBreadthFirst() {
+  const TriMesh& mesh = mesh_;
+  const int nv = mesh.vertexCount();
   const std::vector<std::array<int, 2>> others = starNeighbours(mesh);  // read contiguously below
   // Slots: the vertices in breadth-first order, so a front touches nearby memory.
   slotOf_.assign(nv, -1);
@@ -44,10 +64,11 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh
           }
     }
   }
-  P_.assign(nv, 1.0);
-  if (!metric.isUniform())
-    for (int i = 0; i < nv; ++i) P_[i] = metric.P[vertexOf_[i]];
-  const AcuteSplits splits = splitter.get();
+}
+
+void FastMarcher::buildStars(const AcuteSplits& splits) {
+  const TriMesh& mesh = mesh_;
+  const int nv = mesh.vertexCount();
   // The star of each slot, contiguous, filled one face at a time: the face's three edge lengths
   // are computed once and written into the records of its three corners. A vertex's records
   // come in increasing face order, the order of its corners in the mesh.
@@ -72,15 +93,22 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh
       r.split = splitOf[kn] >= 0 ? 2 * splitOf[kn] : splitOf[kp] >= 0 ? 2 * splitOf[kp] + 1 : -1;
     }
   }
-  if (!uniform_) {
-    starCost_.resize(star_.size());
-    for (int i = 0; i < nv; ++i)
-      for (int k = starBegin_[i]; k < starBegin_[i + 1]; ++k) {
-        const StarFace& f = star_[k];
-        starCost_[k] = {0.5 * (P_[i] + P_[f.a]) * f.lva, 0.5 * (P_[i] + P_[f.b]) * f.lvb,
-                        (P_[i] + P_[f.a] + P_[f.b]) * (1.0 / 3.0)};
-      }
-  }
+}
+
+void FastMarcher::buildStarCosts() {
+  const int nv = mesh_.vertexCount();
+  starCost_.resize(star_.size());
+  for (int i = 0; i < nv; ++i)
+    for (int k = starBegin_[i]; k < starBegin_[i + 1]; ++k) {
+      const StarFace& f = star_[k];
+      starCost_[k] = {0.5 * (P_[i] + P_[f.a]) * f.lva, 0.5 * (P_[i] + P_[f.b]) * f.lvb,
+                      (P_[i] + P_[f.a] + P_[f.b]) * (1.0 / 3.0)};
+    }
+}
+
+void FastMarcher::buildSplitRecords(const AcuteSplits& splits) {
+  const TriMesh& mesh = mesh_;
+  const int nv = mesh.vertexCount();
   nearSplits_.resize(splits.splits.size());
   for (size_t i = 0; i < splits.splits.size(); ++i) {
     const AcuteSplit& sp = splits.splits[i];
@@ -98,13 +126,6 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh
     }
     farSplitBegin_[i + 1] = static_cast<int>(farSplits_.size());
   }
-  node_.assign(nv, Node{kUnreached, 0, -1});
-  U_.assign(nv, kUnreached);
-  cell_.assign(nv, -1);
-  touched_.reserve(nv);
-  accepted_.reserve(nv);
-  acceptedVertices_.reserve(nv);
-  heap_.resize(nv);
 }
 
 double FastMarcher::cornerEdgeLength(int c) const {

@@ -91,6 +91,17 @@ class FastMarcher {
   using FarSplit = detail::FarSplit;
   using Node = detail::Node;
 
+  // Construction, in this order (all O(V + F)):
+  /// Numbers the vertices into slots (slotOf_, vertexOf_) breadth-first from each unnumbered vertex.
+  void orderSlotsBreadthFirst();
+  /// Fills each slot's star records (starBegin_, star_): neighbours, edge lengths, acute split.
+  void buildStars(const AcuteSplits& splits);
+  /// Fills the per-record metric costs (starCost_) of a non-uniform metric from P_ and the stars.
+  void buildStarCosts();
+  /// Fills the acute splits' records: per split, what a star face reads (nearSplits_), and per
+  /// slot, the splits whose far vertex R it is (farSplitBegin_, farSplits_).
+  void buildSplitRecords(const AcuteSplits& splits);
+
   void beginRun();
   void push(int v, double u, int label);
   bool known(int v) const { return node_[v].run != 0; }

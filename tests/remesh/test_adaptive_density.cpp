@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #include "core/geodesic/farthest_point_sampling.h"
@@ -65,6 +66,18 @@ int countIn(const TriMesh& m, const std::vector<int>& samples, double x0, double
   return n;
 }
 
+/// `count` farthest-point samples under `metric` (default FpsParams otherwise, as the filters) and
+/// the seconds the sampling took; a fatal failure if the sampling fails.
+void sampleTimed(const TriMesh& m, const Metric& metric, int count, std::vector<int>& samples, double& seconds) {
+  FpsParams fp;
+  fp.targetCount = count;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto fps = farthestPointSampling(m, metric, fp);
+  ASSERT_TRUE(fps) << fps.status().message;
+  seconds = secondsSince(t0);
+  samples = std::move(fps->samples);
+}
+
 void expectValidDelaunay(const TriMesh& m, const Metric& metric, const std::vector<int>& samples) {
   const auto t0 = std::chrono::steady_clock::now();
   const auto d = geodesicDelaunay(m, metric, samples);
@@ -102,23 +115,20 @@ TEST(AdaptiveDensity, TwoSpeedZonesDensityRatioIsSpeedRatioSquared) {
     ASSERT_DOUBLE_EQ(speed->speedMax, 1.0);
     const double expectedRatio = std::pow(speed->speedMax / speed->speedMin, 2);
 
-    FpsParams fp;
-    fp.targetCount = run.count;
-    const auto t0 = std::chrono::steady_clock::now();
-    const auto fps = farthestPointSampling(m, speed->metric, fp);
-    ASSERT_TRUE(fps) << fps.status().message;
-    const double seconds = secondsSince(t0);
+    std::vector<int> samples;
+    double seconds = 0.0;
+    ASSERT_NO_FATAL_FAILURE(sampleTimed(m, speed->metric, run.count, samples, seconds));
     const double height = 1.0 - 2 * kMargin;
     const double fastArea = (0.5 - kInterfaceGap - kMargin) * height;
     const double slowArea = (1.0 - kMargin - 0.5 - kInterfaceGap) * height;
-    const int fast = countIn(m, fps->samples, kMargin, 0.5 - kInterfaceGap);
-    const int slow = countIn(m, fps->samples, 0.5 + kInterfaceGap, 1.0 - kMargin);
+    const int fast = countIn(m, samples, kMargin, 0.5 - kInterfaceGap);
+    const int slow = countIn(m, samples, 0.5 + kInterfaceGap, 1.0 - kMargin);
     const double ratio = (slow / slowArea) / (fast / fastArea);
     std::printf("jitter %.1f, %d samples (%.2f s): fast zone %d, slow zone %d, density ratio %.3f (expected %.1f, "
                 "error %+.1f%%)\n",
                 run.jitter, run.count, seconds, fast, slow, ratio, expectedRatio, 100 * (ratio / expectedRatio - 1));
     EXPECT_NEAR(ratio / expectedRatio, 1.0, 0.15) << "jitter " << run.jitter << ", " << run.count << " samples";
-    expectValidDelaunay(m, speed->metric, fps->samples);
+    expectValidDelaunay(m, speed->metric, samples);
   }
 }
 
@@ -146,17 +156,14 @@ TEST(AdaptiveDensity, SpeedRampDensityFollowsOneOverSpeedSquaredInFiveBands) {
       return primitive(b) - primitive(a);
     };
 
-    FpsParams fp;
-    fp.targetCount = run.count;
-    const auto t0 = std::chrono::steady_clock::now();
-    const auto fps = farthestPointSampling(m, speed->metric, fp);
-    ASSERT_TRUE(fps) << fps.status().message;
-    const double seconds = secondsSince(t0);
+    std::vector<int> samples;
+    double seconds = 0.0;
+    ASSERT_NO_FATAL_FAILURE(sampleTimed(m, speed->metric, run.count, samples, seconds));
     constexpr int kBands = 5;
     const double width = (1.0 - 2 * kMargin) / kBands;
     std::vector<int> counted(kBands);
     for (int b = 0; b < kBands; ++b)
-      counted[b] = countIn(m, fps->samples, kMargin + b * width, kMargin + (b + 1) * width);
+      counted[b] = countIn(m, samples, kMargin + b * width, kMargin + (b + 1) * width);
     const int total = std::accumulate(counted.begin(), counted.end(), 0);
     const double perUnit = total / integral(kMargin, 1.0 - kMargin);
     std::printf("jitter %.1f, %d samples (%.2f s), %d counted:", run.jitter, run.count, seconds, total);
@@ -167,7 +174,7 @@ TEST(AdaptiveDensity, SpeedRampDensityFollowsOneOverSpeedSquaredInFiveBands) {
           << "band " << b << ", jitter " << run.jitter << ", " << run.count << " samples";
     }
     std::printf("\n");
-    expectValidDelaunay(m, speed->metric, fps->samples);
+    expectValidDelaunay(m, speed->metric, samples);
   }
 }
 

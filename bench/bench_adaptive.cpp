@@ -11,7 +11,11 @@
 //                          and within 1% of it (the repair adds more samples under a non-uniform
 //                          metric): start at N, lower by each run's excess. Counters metric_ms,
 //                          prepare_ms, engine_ms, sampling_ms, delaunay_ms: each stage's wall time
-//                          (RemeshStageTimes; metric_ms = the call's wall time minus the others).
+//                          (RemeshStageTimes; metric_ms = the call's wall time minus the others, i.e.
+//                          building the metric: curvature, speed, P = 1/F). The time is the process's
+//                          CPU time of the whole call (all threads), as for every family but MeshLab's.
+//   AdaptiveDefaultRadius/<mesh>/<pct>  the same with the filter's default curvature radius (1 mean
+//                          edge length) at the uniform target (no calibration).
 //   Cgal/<mesh>/<pct>      CGAL 5.5 isotropic_remeshing (3 iterations, protect_constraints(false)) on a
 //                          Surface_mesh<Epick> copy (copy untimed), target edge length calibrated untimed
 //                          to N vertices as in bench_remesh (up to 3 runs, within 1%).
@@ -50,10 +54,11 @@
 #include "core/remesh/remesh_surface.h"
 #include "core/mesh/tri_mesh.h"
 #include "core/mesh/vcg_mesh.h"
+#include "tests/oracles/remesh_oracles.h"
 
 namespace {
 
-using gr::bench::SurfaceMesh;
+using gr::oracle::SurfaceMesh;
 
 constexpr double kStrength = 16.0;      ///< mu of the Attractive mapping
 constexpr double kRadiusInEdges = 2.0;  ///< curvature ball radius, in mean edge lengths
@@ -81,7 +86,7 @@ const Case kCases[] = {
 // Meshes and per-case state (built once per process, never timed)
 
 struct BenchMesh {
-  std::string path;
+  explicit BenchMesh(gr::TriMesh mesh) : tri(std::move(mesh)), diagonal(tri.boundingBoxDiagonal()) {}
   gr::TriMesh tri;
   double diagonal = 0.0;
   std::optional<gr::Metric> adaptiveMetric;  ///< for the untimed calibration
@@ -89,20 +94,7 @@ struct BenchMesh {
 };
 
 BenchMesh* getMesh(benchmark::State& state, const Case& c) {
-  static std::map<std::string, std::unique_ptr<BenchMesh>> cache;
-  auto& slot = cache[c.mesh];
-  if (slot) return slot.get();
-  const std::string path = std::string(GR_MESH_DIR) + "/" + c.file;
-  gr::Expected<gr::TriMesh> m = gr::loadTriMesh(path);
-  if (!m) {
-    state.SkipWithError(("mesh " + std::string(c.mesh) + ": " + m.status().message).c_str());
-    return nullptr;
-  }
-  slot = std::make_unique<BenchMesh>();
-  slot->path = path;
-  slot->tri = std::move(*m);
-  slot->diagonal = slot->tri.boundingBoxDiagonal();
-  return slot.get();
+  return gr::bench::cachedMesh<BenchMesh>(state, c.mesh, c.file);
 }
 
 int targetCount(const Case& c, const BenchMesh& bm) {
@@ -111,7 +103,7 @@ int targetCount(const Case& c, const BenchMesh& bm) {
 
 void setQualityCounters(benchmark::State& state, const BenchMesh& bm, const gr::TriMesh& out) {
   const gr::AngleStatistics a = gr::angleStatistics(out);
-  const gr::bench::TwoSidedDistance both = gr::bench::twoSidedDistance(out, bm.tri);
+  const gr::oracle::TwoSidedDistance both = gr::oracle::twoSidedDistance(out, bm.tri);
   auto& c = state.counters;
   c["vertices_in"] = bm.tri.vertexCount();
   c["vertices"] = out.vertexCount();
@@ -280,9 +272,6 @@ void BM_Adaptive(benchmark::State& state, const Case& c) {
   state.counters["uniform_vertices"] = *n;
 }
 
-// ------------------------------------------------------------------------------------------------
-// CGAL isotropic remeshing (as bench_remesh)
-
 /// The adaptive filter with its default curvature radius (CurvatureRadius 0 = one mean edge
 /// length) and the same strength, at the uniform run's target (no calibration): the time the
 /// issue's "adaptive at most 1.5x uniform" compares, with the filter's defaults.
@@ -293,6 +282,9 @@ void BM_AdaptiveDefaultRadius(benchmark::State& state, const Case& c) {
   timeRuns(state, *bm, target, [&] { return remeshAdaptive(bm->tri, target, nullptr, 1.0); });
 }
 
+// ------------------------------------------------------------------------------------------------
+// CGAL isotropic remeshing (as bench_remesh: gr_oracles' cgalIsotropicRemeshing)
+
 void BM_Cgal(benchmark::State& state, const Case& c) {
   BenchMesh* bm = getMesh(state, c);
   if (!bm) return;
@@ -301,27 +293,14 @@ void BM_Cgal(benchmark::State& state, const Case& c) {
   const std::optional<int> count = uniformCount(state, c, *bm);
   if (!count) return;
   const double n = *count;
-  static std::map<std::string, gr::bench::CgalCalibration> calibrated;
-  gr::bench::CgalCalibration& calibration = calibrated[c.key()];
+  static std::map<std::string, gr::oracle::CgalCalibration> calibrated;
+  gr::oracle::CgalCalibration& calibration = calibrated[c.key()];
   if (calibration.runs == 0)
-    calibration = gr::bench::calibrateCgalEdgeLength(*input, n, kCgalIterations, kCgalCalibrationRuns, kCountTolerance);
+    calibration = gr::oracle::calibrateCgalEdgeLength(*input, n, kCgalIterations, kCgalCalibrationRuns, kCountTolerance);
   const double length = calibration.edgeLength;
   const int runs = calibration.runs;
-  std::optional<SurfaceMesh> out;
-  for (auto _ : state) {
-    state.PauseTiming();
-    SurfaceMesh m = *input;
-    state.ResumeTiming();
-    gr::bench::cgalIsotropicRemeshing(m, length, kCgalIterations);
-    state.PauseTiming();
-    out = std::move(m);
-    state.ResumeTiming();
-  }
-  gr::Expected<gr::TriMesh> tri = gr::bench::toTriMesh(*out);
-  if (!tri) {
-    state.SkipWithError(("CGAL output: " + tri.status().message).c_str());
-    return;
-  }
+  const std::optional<gr::TriMesh> tri = gr::bench::timeCgalRemeshing(state, *input, length, kCgalIterations);
+  if (!tri) return;
   state.counters["edge_length"] = length;
   state.counters["calibration_runs"] = runs;
   state.counters["uniform_vertices"] = n;
@@ -365,7 +344,7 @@ void BM_MeshLabQuadric(benchmark::State& state, const Case& c) {
   const std::string dir = dirTemplate, script = dir + "/script.mlx", out = dir + "/out.off", log = dir + "/log.txt";
   const int targetFaces = 2 * *n - 4;
   std::ofstream(script) << quadricScript(targetFaces);
-  const std::string command = "xvfb-run -a meshlabserver -i '" + bm->path + "' -o '" + out + "' -s '" + script +
+  const std::string command = "xvfb-run -a meshlabserver -i '" + gr::bench::benchMeshPath(c.file) + "' -o '" + out + "' -s '" + script +
                               "' > '" + log + "' 2>&1";
   for (auto _ : state) {
     std::remove(out.c_str());
@@ -417,11 +396,4 @@ void registerAll() {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  registerAll();
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return gr::bench::runBenchmarks(argc, argv, registerAll); }

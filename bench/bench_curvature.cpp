@@ -14,7 +14,7 @@
 //   Vcg_Taubin/<mesh>      vcg::tri::UpdateCurvature<M>::PrincipalDirections(m): Taubin 1995 over
 //                          the 1-ring (with its per-vertex normal update); MeshLab's default option.
 //   vcglib runs on a float mesh, as MeshLab's CMeshO, with FF and VF adjacency and per-vertex normals
-//   built once, untimed.
+//   built once, untimed: gr_oracles' VcgCurvature (tests/oracles/curvature_oracles.h).
 //
 // Meshes: fandisk (6,475 vertices), bunny00 (37,706), armadillo (26,002) from libcgal-demo, and two
 // meshes made in the set-up by three 1-to-4 midpoint subdivisions (gr::subdivideMidpoint):
@@ -25,41 +25,18 @@
 
 #include <benchmark/benchmark.h>
 
-#include <cmath>
-#include <map>
 #include <memory>
 #include <string>
 #include <utility>
-#include <vector>
-
-#include <vcg/complex/complex.h>
-#include <vcg/complex/algorithms/update/curvature.h>
-#include <vcg/complex/algorithms/update/normal.h>
-#include <vcg/complex/algorithms/update/topology.h>
 
 #include "bench/bench_support.h"
 #include "core/field/curvature.h"
 #include "core/mesh/tri_mesh.h"
-#include "core/mesh/vcg_mesh.h"
+#include "tests/oracles/curvature_oracles.h"
 
 namespace {
 
-// vcglib: what PrincipalDirections and PrincipalDirectionsNormalCycle need (FF and VF adjacency,
-// normals, curvature and its directions), float like MeshLab's CMeshO.
-class CVertex;
-class CFace;
-struct CUsedTypes : public vcg::UsedTypes<vcg::Use<CVertex>::AsVertexType, vcg::Use<CFace>::AsFaceType> {};
-class CVertex : public vcg::Vertex<CUsedTypes, vcg::vertex::Coord3f, vcg::vertex::Normal3f, vcg::vertex::VFAdj,
-                                   vcg::vertex::Curvaturef, vcg::vertex::CurvatureDirf, vcg::vertex::BitFlags> {};
-class CFace : public vcg::Face<CUsedTypes, vcg::face::VertexRef, vcg::face::Normal3f, vcg::face::FFAdj,
-                               vcg::face::VFAdj, vcg::face::BitFlags> {};
-class CMesh : public vcg::tri::TriMesh<std::vector<CVertex>, std::vector<CFace>> {};
-
-struct MeshSpec {
-  const char* name;
-  const char* file;
-  int subdivisions;
-};
+using gr::bench::MeshSpec;
 
 const MeshSpec kMeshes[] = {
     {"fandisk", "fandisk.off", 0},
@@ -69,42 +46,20 @@ const MeshSpec kMeshes[] = {
     {"armadillo_sub3", "armadillo.off", 3},
 };
 
-/// A mesh and its vcglib copy, built once per process (never timed).
+/// A mesh and its vcglib copy (gr_oracles' VcgCurvature), built once per process (never timed).
 struct BenchMesh {
+  explicit BenchMesh(gr::TriMesh mesh) : tri(std::move(mesh)), meanEdge(tri.meanEdgeLength()) {}
   gr::TriMesh tri;
   double meanEdge = 0.0;
-  std::unique_ptr<CMesh> vcg;
+  std::unique_ptr<gr::oracle::VcgCurvature> vcg;
 };
 
 BenchMesh* getMesh(benchmark::State& state, const MeshSpec& spec) {
-  static std::map<std::string, std::unique_ptr<BenchMesh>> cache;
-  auto& slot = cache[spec.name];
-  if (slot) return slot.get();
-  gr::Expected<gr::TriMesh> m = gr::bench::loadBenchMesh(spec.file, spec.subdivisions);
-  if (!m) {
-    state.SkipWithError(("mesh " + std::string(spec.name) + ": " + m.status().message).c_str());
-    return nullptr;
-  }
-  slot = std::make_unique<BenchMesh>();
-  slot->tri = std::move(*m);
-  slot->meanEdge = slot->tri.meanEdgeLength();
-  return slot.get();
+  return gr::bench::cachedMesh<BenchMesh>(state, spec);
 }
 
-CMesh& vcgMesh(BenchMesh& bm) {
-  if (bm.vcg) return *bm.vcg;
-  auto m = std::make_unique<CMesh>();
-  const gr::TriMesh& t = bm.tri;
-  vcg::tri::Allocator<CMesh>::AddVertices(*m, t.vertexCount());
-  for (int v = 0; v < t.vertexCount(); ++v)
-    m->vert[v].P() = vcg::Point3f(float(t.positions[v].x()), float(t.positions[v].y()), float(t.positions[v].z()));
-  vcg::tri::Allocator<CMesh>::AddFaces(*m, t.faceCount());
-  for (int f = 0; f < t.faceCount(); ++f)
-    for (int k = 0; k < 3; ++k) m->face[f].V(k) = &m->vert[t.triangles[f][k]];
-  vcg::tri::UpdateTopology<CMesh>::FaceFace(*m);
-  vcg::tri::UpdateTopology<CMesh>::VertexFace(*m);
-  vcg::tri::UpdateNormal<CMesh>::PerVertexNormalizedPerFace(*m);
-  bm.vcg = std::move(m);
+gr::oracle::VcgCurvature& vcgCurvature(BenchMesh& bm) {
+  if (!bm.vcg) bm.vcg = std::make_unique<gr::oracle::VcgCurvature>(bm.tri);
   return *bm.vcg;
 }
 
@@ -147,10 +102,10 @@ void BM_Ours(benchmark::State& state, const MeshSpec& spec, const RadiusSpec& ra
 void BM_VcgNormalCycle(benchmark::State& state, const MeshSpec& spec) {
   BenchMesh* bm = getMesh(state, spec);
   if (!bm) return;
-  CMesh& m = vcgMesh(*bm);
+  gr::oracle::VcgCurvature& vcg = vcgCurvature(*bm);
   for (auto _ : state) {
-    vcg::tri::UpdateCurvature<CMesh>::PrincipalDirectionsNormalCycle(m);
-    benchmark::DoNotOptimize(m.vert[0].K1());
+    vcg.normalCycle();
+    benchmark::DoNotOptimize(vcg.k1(0));
   }
   setRate(state, bm->tri.vertexCount());
 }
@@ -158,10 +113,10 @@ void BM_VcgNormalCycle(benchmark::State& state, const MeshSpec& spec) {
 void BM_VcgTaubin(benchmark::State& state, const MeshSpec& spec) {
   BenchMesh* bm = getMesh(state, spec);
   if (!bm) return;
-  CMesh& m = vcgMesh(*bm);
+  gr::oracle::VcgCurvature& vcg = vcgCurvature(*bm);
   for (auto _ : state) {
-    vcg::tri::UpdateCurvature<CMesh>::PrincipalDirections(m);
-    benchmark::DoNotOptimize(m.vert[0].K1());
+    vcg.taubin();
+    benchmark::DoNotOptimize(vcg.k1(0));
   }
   setRate(state, bm->tri.vertexCount());
 }
@@ -192,11 +147,4 @@ void registerAll() {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  registerAll();
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return gr::bench::runBenchmarks(argc, argv, registerAll); }

@@ -3,12 +3,15 @@
 //
 //   Ours_FastMarcher          gr::FastMarcher reused with reset(): propagation only (no allocation)
 //   Ours_fastMarching_oneshot gr::fastMarching(): engine construction + propagation + result copy
-//   Dijkstra                  shortest paths along edges (CSR graph, binary heap): the baseline
+//   Dijkstra                  shortest paths along edges (CSR graph, binary heap, buffers reused):
+//                             the baseline
 //   Vcg_Geodesic              vcg::tri::Geodesic<M>::Compute, what MeshLab's "Colorize by geodesic
 //                             distance" runs (float mesh, as MeshLab's CMeshO)
 //   CgalHeat_BuildQuery       CGAL heat method (Direct): construction (factorisation) + one query
 //   CgalHeat_Query            the same, one query on an already factorised solver
 //   CgalHeatIdt_*             the same with the intrinsic Delaunay triangulation (not on the 1M mesh)
+// The competitors are gr_oracles' (tests/oracles/geodesic_oracles.h: DijkstraSolver,
+// VcgGeodesic<float>, HeatSolver), the code the accuracy tests compare against.
 //
 // Farthest-point sampling (the inner loop of the remesher) on bunny00:
 //   FpsStep_*   one step: the field of 999 sources is known, a 1000th source is added. Ours and
@@ -30,188 +33,31 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <limits>
-#include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include <vcg/complex/complex.h>
-#include <vcg/complex/algorithms/geodesic.h>
-#include <vcg/complex/algorithms/update/topology.h>
-
-#include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
-
+#include "bench/bench_support.h"
 #include "core/geodesic/fast_marching.h"
 #include "core/geodesic/metric.h"
 #include "core/mesh/tri_mesh.h"
-#include "core/mesh/subdivide.h"
-#include "core/mesh/vcg_mesh.h"
+#include "tests/oracles/geodesic_oracles.h"
 
 namespace {
+
+using gr::bench::MeshSpec;
+using gr::oracle::DijkstraSolver;
+using gr::oracle::HeatVariant;
 
 constexpr int kSource = 0;        ///< the source vertex of every single-source benchmark
 constexpr int kFpsSources = 1000; ///< FpsStep_*: the field of kFpsSources-1 sources, plus one
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // ------------------------------------------------------------------------------------------------
-// Competitor mesh types
-
-// vcglib: the components tri::Geodesic needs (VF adjacency, quality, mark, flags), float
-// coordinates and quality as in MeshLab's CMeshO (MESHLAB_SCALAR = float).
-class VVertex;
-class VFace;
-struct VUsedTypes
-    : public vcg::UsedTypes<vcg::Use<VVertex>::AsVertexType, vcg::Use<VFace>::AsFaceType> {};
-class VVertex : public vcg::Vertex<VUsedTypes, vcg::vertex::Coord3f, vcg::vertex::VFAdj,
-                                   vcg::vertex::Qualityf, vcg::vertex::Mark, vcg::vertex::BitFlags> {};
-class VFace : public vcg::Face<VUsedTypes, vcg::face::VertexRef, vcg::face::VFAdj, vcg::face::Mark,
-                               vcg::face::BitFlags> {};
-class VMesh : public vcg::tri::TriMesh<std::vector<VVertex>, std::vector<VFace>> {};
-
-using Kernel = CGAL::Simple_cartesian<double>;
-using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
-using SmVertex = SurfaceMesh::Vertex_index;
-using HeatDirect =
-    CGAL::Heat_method_3::Surface_mesh_geodesic_distances_3<SurfaceMesh, CGAL::Heat_method_3::Direct>;
-using HeatIdt = CGAL::Heat_method_3::Surface_mesh_geodesic_distances_3<
-    SurfaceMesh, CGAL::Heat_method_3::Intrinsic_Delaunay>;
-
-// ------------------------------------------------------------------------------------------------
-// Dijkstra along edges: the baseline
-
-/// Vertex -> neighbour adjacency in CSR form with edge lengths, built once from the corners.
-struct EdgeGraph {
-  std::vector<int> begin;       ///< size n + 1
-  std::vector<int> neighbour;
-  std::vector<double> length;
-  int vertexCount() const { return static_cast<int>(begin.size()) - 1; }
-};
-
-EdgeGraph buildEdgeGraph(const gr::TriMesh& m) {
-  EdgeGraph g;
-  const int nv = m.vertexCount();
-  g.begin.assign(nv + 1, 0);
-  g.neighbour.reserve(m.vertexCorners.size() + nv);
-  g.length.reserve(m.vertexCorners.size() + nv);
-  std::vector<int> ring;
-  for (int v = 0; v < nv; ++v) {
-    ring.clear();
-    for (const int* it = m.cornersBegin(v); it != m.cornersEnd(v); ++it) {
-      ring.push_back(m.vertex(gr::TriMesh::next(*it)));
-      ring.push_back(m.vertex(gr::TriMesh::prev(*it)));
-    }
-    std::sort(ring.begin(), ring.end());
-    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-    for (int w : ring) {
-      g.neighbour.push_back(w);
-      g.length.push_back((m.positions[v] - m.positions[w]).norm());
-    }
-    g.begin[v + 1] = static_cast<int>(g.neighbour.size());
-  }
-  return g;
-}
-
-/// Dijkstra with a binary heap and lazy deletion; buffers reused across runs like FastMarcher.
-class Dijkstra {
- public:
-  explicit Dijkstra(const EdgeGraph& g) : g_(g), d_(g.vertexCount(), kInf) {
-    heap_.reserve(g.vertexCount());
-    touched_.reserve(g.vertexCount());
-  }
-
-  void reset() {
-    for (int v : touched_) d_[v] = kInf;
-    touched_.clear();
-    heap_.clear();
-  }
-
-  /// Full multi-source run on a reset engine; returns the number of reached vertices.
-  int run(const std::vector<int>& sources) {
-    for (int s : sources)
-      if (d_[s] != 0.0) set(s, 0.0);
-    int reached = 0;
-    while (!heap_.empty()) {
-      std::pop_heap(heap_.begin(), heap_.end(), Later{});
-      const Entry e = heap_.back();
-      heap_.pop_back();
-      if (e.d != d_[e.v]) continue;  // stale
-      ++reached;
-      relax(e.v, e.d, nullptr);
-    }
-    return reached;
-  }
-
-  /// Adds a source to the current field: U <- min(U, U_s), visiting only the improved vertices.
-  /// Every change is recorded as (vertex, old value) in `undo`, oldest first. Returns the number
-  /// of changes.
-  int addSourceIncremental(int s, std::vector<std::pair<int, double>>* undo) {
-    if (d_[s] == 0.0) return 0;
-    undo->push_back({s, d_[s]});
-    set(s, 0.0);
-    while (!heap_.empty()) {
-      std::pop_heap(heap_.begin(), heap_.end(), Later{});
-      const Entry e = heap_.back();
-      heap_.pop_back();
-      if (e.d != d_[e.v]) continue;
-      relax(e.v, e.d, undo);
-    }
-    return static_cast<int>(undo->size());
-  }
-
-  /// Reverts the changes recorded by addSourceIncremental.
-  void undo(const std::vector<std::pair<int, double>>& changes) {
-    for (auto it = changes.rbegin(); it != changes.rend(); ++it) d_[it->first] = it->second;
-  }
-
-  const std::vector<double>& distance() const { return d_; }
-
- private:
-  struct Entry {
-    double d;
-    int v;
-  };
-  struct Later {
-    bool operator()(const Entry& x, const Entry& y) const { return x.d > y.d; }
-  };
-
-  void set(int v, double d) {
-    if (d_[v] == kInf) touched_.push_back(v);
-    d_[v] = d;
-    heap_.push_back({d, v});
-    std::push_heap(heap_.begin(), heap_.end(), Later{});
-  }
-
-  void relax(int v, double dv, std::vector<std::pair<int, double>>* undo) {
-    for (int k = g_.begin[v]; k < g_.begin[v + 1]; ++k) {
-      const int w = g_.neighbour[k];
-      const double dw = dv + g_.length[k];
-      if (dw < d_[w]) {
-        if (undo) undo->push_back({w, d_[w]});
-        set(w, dw);
-      }
-    }
-  }
-
-  const EdgeGraph& g_;
-  std::vector<double> d_;
-  std::vector<Entry> heap_;
-  std::vector<int> touched_;
-};
-
-// ------------------------------------------------------------------------------------------------
 // Meshes
-
-struct MeshSpec {
-  const char* name;
-  const char* file;
-  int subdivisions;
-};
 
 /// fandisk 6,475 v; bunny00 37,706 v; armadillo 26,002 v; armadillo_sub3 1,664,002 v.
 const MeshSpec kMeshes[] = {
@@ -222,88 +68,45 @@ const MeshSpec kMeshes[] = {
 };
 bool isLarge(const MeshSpec& s) { return s.subdivisions >= 3; }
 
-/// A mesh and, built on first use, its copy in each competitor's structure (never timed).
+/// A mesh and, built on first use, each competitor's object for it (never timed): the competitors
+/// are gr_oracles' (tests/oracles/geodesic_oracles.h), the ones the accuracy tests use.
 struct BenchMesh {
+  explicit BenchMesh(gr::TriMesh mesh) : tri(std::move(mesh)) {}
   gr::TriMesh tri;
-  std::unique_ptr<EdgeGraph> graph;
-  std::unique_ptr<VMesh> vcg;
-  std::unique_ptr<SurfaceMesh> cgal;
-  SurfaceMesh::Property_map<SmVertex, double> cgalDistance;
-  std::unique_ptr<HeatDirect> heatDirect;  ///< factorised solvers, kept for the *_Query benchmarks
-  std::unique_ptr<HeatIdt> heatIdt;
+  std::unique_ptr<gr::oracle::VcgGeodesic<float>> vcg;  ///< float, as MeshLab's CMeshO
+  std::optional<gr::oracle::HeatMesh> cgal;
+  std::unique_ptr<gr::oracle::HeatSolver> heatDirect;  ///< factorised solvers, kept for the *_Query benchmarks
+  std::unique_ptr<gr::oracle::HeatSolver> heatIdt;
   std::vector<int> fpsSources;             ///< kFpsSources vertices in farthest-point order
 };
 
-std::map<std::string, std::unique_ptr<BenchMesh>>& meshCache() {
-  static std::map<std::string, std::unique_ptr<BenchMesh>> cache;
-  return cache;
-}
-
 /// The mesh of `spec`, loaded (and subdivided) once per process; nullptr after SkipWithError.
 BenchMesh* getMesh(benchmark::State& state, const MeshSpec& spec) {
-  auto& slot = meshCache()[spec.name];
-  if (slot) return slot.get();
-  gr::Expected<gr::TriMesh> m = gr::loadTriMesh(std::string(GR_MESH_DIR) + "/" + spec.file);
-  if (m && spec.subdivisions > 0) {  // gr::subdivideMidpoint: 1-to-4, old vertices keep their indices
-    gr::Expected<gr::Subdivision> fine = gr::subdivideMidpoint(*m, spec.subdivisions);
-    m = fine ? gr::Expected<gr::TriMesh>(std::move(fine->mesh)) : gr::Expected<gr::TriMesh>(fine.status());
-  }
-  if (!m) {
-    state.SkipWithError(("mesh " + std::string(spec.name) + ": " + m.status().message).c_str());
-    return nullptr;
-  }
-  slot = std::make_unique<BenchMesh>();
-  slot->tri = std::move(*m);
-  return slot.get();
+  return gr::bench::cachedMesh<BenchMesh>(state, spec);
 }
 
-const EdgeGraph& edgeGraph(BenchMesh& bm) {
-  if (!bm.graph) bm.graph = std::make_unique<EdgeGraph>(buildEdgeGraph(bm.tri));
-  return *bm.graph;
-}
-
-VMesh& vcgMesh(BenchMesh& bm) {
-  if (bm.vcg) return *bm.vcg;
-  auto m = std::make_unique<VMesh>();
-  const gr::TriMesh& t = bm.tri;
-  vcg::tri::Allocator<VMesh>::AddVertices(*m, t.vertexCount());
-  for (int v = 0; v < t.vertexCount(); ++v)
-    m->vert[v].P() = vcg::Point3f(float(t.positions[v].x()), float(t.positions[v].y()),
-                                  float(t.positions[v].z()));
-  vcg::tri::Allocator<VMesh>::AddFaces(*m, t.faceCount());
-  for (int f = 0; f < t.faceCount(); ++f)
-    for (int k = 0; k < 3; ++k) m->face[f].V(k) = &m->vert[t.triangles[f][k]];
-  vcg::tri::UpdateTopology<VMesh>::VertexFace(*m);
-  bm.vcg = std::move(m);
+gr::oracle::VcgGeodesic<float>& vcgGeodesic(BenchMesh& bm) {
+  if (!bm.vcg) bm.vcg = std::make_unique<gr::oracle::VcgGeodesic<float>>(bm.tri);
   return *bm.vcg;
 }
 
-/// The CGAL copy; vertex i of the TriMesh is vertex i of the Surface_mesh. nullptr after
-/// SkipWithError when Surface_mesh rejects a face (non-manifold or inconsistently oriented).
-SurfaceMesh* cgalMesh(benchmark::State& state, BenchMesh& bm) {
-  if (bm.cgal) return bm.cgal.get();
-  auto m = std::make_unique<SurfaceMesh>();
-  const gr::TriMesh& t = bm.tri;
-  m->reserve(t.vertexCount(), 3 * t.faceCount() / 2 + t.topology.boundaryEdges, t.faceCount());
-  for (const gr::Vec3& p : t.positions) m->add_vertex(Kernel::Point_3(p.x(), p.y(), p.z()));
-  for (int f = 0; f < t.faceCount(); ++f) {
-    const gr::Tri& tr = t.triangles[f];
-    if (m->add_face(SmVertex(tr[0]), SmVertex(tr[1]), SmVertex(tr[2])) == SurfaceMesh::null_face()) {
-      state.SkipWithError(("CGAL Surface_mesh rejects face " + std::to_string(f)).c_str());
-      return nullptr;
-    }
+/// The CGAL copy and its distance property; vertex i of the TriMesh is vertex i of the
+/// Surface_mesh. nullptr after SkipWithError when Surface_mesh rejects a face (non-manifold or
+/// inconsistently oriented).
+gr::oracle::HeatMesh* cgalMesh(benchmark::State& state, BenchMesh& bm) {
+  if (bm.cgal) return &*bm.cgal;
+  gr::Expected<gr::oracle::HeatMesh> m = gr::oracle::toHeatMesh(bm.tri);
+  if (!m) {
+    state.SkipWithError(m.status().message.c_str());
+    return nullptr;
   }
-  bm.cgalDistance = m->add_property_map<SmVertex, double>("v:gr_distance", 0.0).first;
-  bm.cgal = std::move(m);
-  return bm.cgal.get();
+  bm.cgal = std::move(*m);
+  return &*bm.cgal;
 }
 
-template <class Heat>
-std::unique_ptr<Heat>& heatSlot(BenchMesh& bm);
-template <>
-std::unique_ptr<HeatDirect>& heatSlot<HeatDirect>(BenchMesh& bm) { return bm.heatDirect; }
-template <>
-std::unique_ptr<HeatIdt>& heatSlot<HeatIdt>(BenchMesh& bm) { return bm.heatIdt; }
+std::unique_ptr<gr::oracle::HeatSolver>& heatSlot(BenchMesh& bm, HeatVariant variant) {
+  return variant == HeatVariant::Direct ? bm.heatDirect : bm.heatIdt;
+}
 
 /// The vertex of largest finite distance (ties: the lowest index); -1 if every finite value is 0.
 int argmaxFinite(const std::vector<double>& d) {
@@ -321,7 +124,7 @@ int argmaxFinite(const std::vector<double>& d) {
 /// (incremental Dijkstra). The same list is given to every FpsStep_* method.
 const std::vector<int>& fpsSources(BenchMesh& bm) {
   if (!bm.fpsSources.empty()) return bm.fpsSources;
-  Dijkstra dij(edgeGraph(bm));
+  DijkstraSolver dij(bm.tri);
   std::vector<int> sources{kSource};
   dij.run(sources);
   std::vector<std::pair<int, double>> undo;
@@ -346,26 +149,18 @@ double maxFinite(const std::vector<double>& d) {
   return m;
 }
 
-/// CGAL's heat method leaves max-double (or NaN) where its solve failed, e.g. where the heat
-/// underflowed to 0 far from the source on a fine mesh: those are not counted as reached.
-std::pair<int, double> cgalReached(const BenchMesh& bm) {
-  int reached = 0;
-  double maxDist = 0.0;
-  for (SmVertex v : bm.cgal->vertices()) {
-    const double d = bm.cgalDistance[v];
-    if (std::isfinite(d) && d < std::numeric_limits<double>::max()) {
-      ++reached;
-      maxDist = std::max(maxDist, d);
-    }
-  }
-  return {reached, maxDist};
-}
-
 void setCounters(benchmark::State& state, const BenchMesh& bm, double reached, double maxDist) {
   state.counters["vertices/s"] = benchmark::Counter(reached, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["reached"] = reached;
   state.counters["vertices"] = bm.tri.vertexCount();
   state.counters["max_dist"] = maxDist;
+}
+
+/// vcglib leaves max-float where it did not reach; CGAL's heat method leaves max-double (or NaN)
+/// where its solve failed, e.g. where the heat underflowed to 0 far from the source on a fine
+/// mesh: those are not counted as reached.
+void setCounters(benchmark::State& state, const BenchMesh& bm, const gr::oracle::Reached& reached) {
+  setCounters(state, bm, reached.count, reached.maxDistance);
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -413,7 +208,7 @@ void BM_OursOneShot(benchmark::State& state, const MeshSpec& spec) {
 void BM_Dijkstra(benchmark::State& state, const MeshSpec& spec) {
   BenchMesh* bm = getMesh(state, spec);
   if (!bm) return;
-  Dijkstra dij(edgeGraph(*bm));
+  DijkstraSolver dij(bm->tri);
   const std::vector<int> sources{kSource};
   int reached = 0;
   for (auto _ : state) {
@@ -424,71 +219,55 @@ void BM_Dijkstra(benchmark::State& state, const MeshSpec& spec) {
   setCounters(state, *bm, reached, maxFinite(dij.distance()));
 }
 
-/// Counts the vertices vcglib reached (it leaves max-float in the others) and their max.
-std::pair<int, double> vcgReached(const VMesh& m) {
-  int reached = 0;
-  double maxDist = 0.0;
-  for (const VVertex& v : m.vert)
-    if (v.cQ() < std::numeric_limits<float>::max()) {
-      ++reached;
-      maxDist = std::max(maxDist, double(v.cQ()));
-    }
-  return {reached, maxDist};
-}
-
 void BM_VcgGeodesic(benchmark::State& state, const MeshSpec& spec) {
   BenchMesh* bm = getMesh(state, spec);
   if (!bm) return;
-  VMesh& m = vcgMesh(*bm);
-  const std::vector<VMesh::VertexPointer> seeds{&m.vert[kSource]};
-  vcg::tri::EuclideanDistance<VMesh> dist;
+  gr::oracle::VcgGeodesic<float>& vcg = vcgGeodesic(*bm);
+  vcg.setSources({kSource});
   for (auto _ : state) {
     // The call MeshLab's filter_geodesic makes (maxDistance = no limit).
-    vcg::tri::Geodesic<VMesh>::Compute(m, seeds, dist, std::numeric_limits<float>::max());
-    benchmark::DoNotOptimize(m.vert.data());
+    vcg.compute();
+    benchmark::DoNotOptimize(&vcg);
   }
-  const auto [reached, maxDist] = vcgReached(m);
-  setCounters(state, *bm, reached, maxDist);
+  setCounters(state, *bm, vcg.reached());
 }
 
 /// Construction (mass and cotan matrices, time step, factorisation of M + tL and of L) and one
 /// query. The last solver built is kept for the *_Query benchmark of the same mesh.
-template <class Heat>
+template <HeatVariant variant>
 void BM_CgalHeatBuildQuery(benchmark::State& state, const MeshSpec& spec) {
   BenchMesh* bm = getMesh(state, spec);
   if (!bm) return;
-  SurfaceMesh* sm = cgalMesh(state, *bm);
-  if (!sm) return;
+  gr::oracle::HeatMesh* hm = cgalMesh(state, *bm);
+  if (!hm) return;
   for (auto _ : state) {
-    auto heat = std::make_unique<Heat>(*sm);
-    heat->add_source(SmVertex(kSource));
-    heat->estimate_geodesic_distances(bm->cgalDistance);
+    auto heat = std::make_unique<gr::oracle::HeatSolver>(*hm, variant);
+    heat->addSource(kSource);
+    heat->solve();
     benchmark::DoNotOptimize(heat.get());
     state.PauseTiming();  // not timed: keeping or freeing the solver
-    if (!heatSlot<Heat>(*bm)) heatSlot<Heat>(*bm) = std::move(heat);
+    if (!heatSlot(*bm, variant)) heatSlot(*bm, variant) = std::move(heat);
     heat.reset();
     state.ResumeTiming();
   }
-  const auto [reached, maxDist] = cgalReached(*bm);
-  setCounters(state, *bm, reached, maxDist);
+  setCounters(state, *bm, hm->reached());
 }
 
 /// One query (two back-substitutions, gradient, divergence) on a factorised solver.
-template <class Heat>
+template <HeatVariant variant>
 void BM_CgalHeatQuery(benchmark::State& state, const MeshSpec& spec) {
   BenchMesh* bm = getMesh(state, spec);
   if (!bm) return;
-  SurfaceMesh* sm = cgalMesh(state, *bm);
-  if (!sm) return;
-  auto& heat = heatSlot<Heat>(*bm);
-  if (!heat) heat = std::make_unique<Heat>(*sm);  // not timed
+  gr::oracle::HeatMesh* hm = cgalMesh(state, *bm);
+  if (!hm) return;
+  auto& heat = heatSlot(*bm, variant);
+  if (!heat) heat = std::make_unique<gr::oracle::HeatSolver>(*hm, variant);  // not timed
   for (auto _ : state) {
-    heat->add_source(SmVertex(kSource));  // marks the sources changed, so the query recomputes
-    heat->estimate_geodesic_distances(bm->cgalDistance);
-    benchmark::DoNotOptimize(bm->cgalDistance.data());
+    heat->addSource(kSource);  // marks the sources changed, so the query recomputes
+    heat->solve();
+    benchmark::DoNotOptimize(hm->distance.data());
   }
-  const auto [reached, maxDist] = cgalReached(*bm);
-  setCounters(state, *bm, reached, maxDist);
+  setCounters(state, *bm, hm->reached());
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -564,7 +343,7 @@ void BM_FpsStepDijkstraIncremental(benchmark::State& state, const MeshSpec& spec
   BenchMesh* bm = getMesh(state, spec);
   if (!bm) return;
   const std::vector<int>& sources = fpsSources(*bm);
-  Dijkstra dij(edgeGraph(*bm));
+  DijkstraSolver dij(bm->tri);
   dij.run(std::vector<int>(sources.begin(), sources.end() - 1));
   std::vector<std::pair<int, double>> changes;
   changes.reserve(bm->tri.vertexCount());
@@ -591,7 +370,7 @@ void BM_FpsStepDijkstraFullRecompute(benchmark::State& state, const MeshSpec& sp
   BenchMesh* bm = getMesh(state, spec);
   if (!bm) return;
   const std::vector<int>& sources = fpsSources(*bm);
-  Dijkstra dij(edgeGraph(*bm));
+  DijkstraSolver dij(bm->tri);
   int reached = 0;
   for (auto _ : state) {
     dij.reset();
@@ -607,16 +386,13 @@ void BM_FpsStepVcgGeodesic(benchmark::State& state, const MeshSpec& spec) {
   BenchMesh* bm = getMesh(state, spec);
   if (!bm) return;
   const std::vector<int>& sources = fpsSources(*bm);
-  VMesh& m = vcgMesh(*bm);
-  std::vector<VMesh::VertexPointer> seeds;
-  for (int s : sources) seeds.push_back(&m.vert[s]);
-  vcg::tri::EuclideanDistance<VMesh> dist;
+  gr::oracle::VcgGeodesic<float>& vcg = vcgGeodesic(*bm);
+  vcg.setSources(sources);
   for (auto _ : state) {
-    vcg::tri::Geodesic<VMesh>::Compute(m, seeds, dist, std::numeric_limits<float>::max());
-    benchmark::DoNotOptimize(m.vert.data());
+    vcg.compute();
+    benchmark::DoNotOptimize(&vcg);
   }
-  const auto [reached, maxDist] = vcgReached(m);
-  setCounters(state, *bm, reached, maxDist);
+  setCounters(state, *bm, vcg.reached());
   state.counters["sources"] = sources.size();
 }
 
@@ -625,21 +401,20 @@ void BM_FpsStepVcgGeodesic(benchmark::State& state, const MeshSpec& spec) {
 void BM_FpsStepCgalHeatQuery(benchmark::State& state, const MeshSpec& spec) {
   BenchMesh* bm = getMesh(state, spec);
   if (!bm) return;
-  SurfaceMesh* sm = cgalMesh(state, *bm);
-  if (!sm) return;
+  gr::oracle::HeatMesh* hm = cgalMesh(state, *bm);
+  if (!hm) return;
   const std::vector<int>& sources = fpsSources(*bm);
   auto& heat = bm->heatDirect;
-  if (!heat) heat = std::make_unique<HeatDirect>(*sm);
-  heat->clear_sources();
-  for (size_t i = 0; i + 1 < sources.size(); ++i) heat->add_source(SmVertex(sources[i]));
+  if (!heat) heat = std::make_unique<gr::oracle::HeatSolver>(*hm, HeatVariant::Direct);
+  heat->clearSources();
+  for (size_t i = 0; i + 1 < sources.size(); ++i) heat->addSource(sources[i]);
   for (auto _ : state) {
-    heat->add_source(SmVertex(sources.back()));
-    heat->estimate_geodesic_distances(bm->cgalDistance);
-    benchmark::DoNotOptimize(bm->cgalDistance.data());
+    heat->addSource(sources.back());
+    heat->solve();
+    benchmark::DoNotOptimize(hm->distance.data());
   }
-  heat->clear_sources();
-  const auto [reached, maxDist] = cgalReached(*bm);
-  setCounters(state, *bm, reached, maxDist);
+  heat->clearSources();
+  setCounters(state, *bm, hm->reached());
   state.counters["sources"] = sources.size();
 }
 
@@ -675,7 +450,7 @@ void BM_Fps1000OursIncremental(benchmark::State& state, const MeshSpec& spec) {
 void BM_Fps1000DijkstraIncremental(benchmark::State& state, const MeshSpec& spec) {
   BenchMesh* bm = getMesh(state, spec);
   if (!bm) return;
-  Dijkstra dij(edgeGraph(*bm));
+  DijkstraSolver dij(bm->tri);
   std::vector<std::pair<int, double>> changes;
   changes.reserve(bm->tri.vertexCount());
   double visited = 0;
@@ -698,7 +473,7 @@ void BM_Fps1000DijkstraIncremental(benchmark::State& state, const MeshSpec& spec
 void BM_Fps1000ArgmaxScans(benchmark::State& state, const MeshSpec& spec) {
   BenchMesh* bm = getMesh(state, spec);
   if (!bm) return;
-  Dijkstra dij(edgeGraph(*bm));
+  DijkstraSolver dij(bm->tri);
   dij.run({kSource});
   for (auto _ : state) {
     long sum = 0;
@@ -748,11 +523,11 @@ void registerAll() {
     add("Ours_fastMarching_oneshot", BM_OursOneShot, spec);
     add("Dijkstra", BM_Dijkstra, spec);
     add("Vcg_Geodesic", BM_VcgGeodesic, spec, slow);
-    add("CgalHeat_BuildQuery", BM_CgalHeatBuildQuery<HeatDirect>, spec, slow);
-    add("CgalHeat_Query", BM_CgalHeatQuery<HeatDirect>, spec);
+    add("CgalHeat_BuildQuery", BM_CgalHeatBuildQuery<HeatVariant::Direct>, spec, slow);
+    add("CgalHeat_Query", BM_CgalHeatQuery<HeatVariant::Direct>, spec);
     if (!isLarge(spec)) {  // the intrinsic Delaunay variant on 1.6M vertices would double the run time
-      add("CgalHeatIdt_BuildQuery", BM_CgalHeatBuildQuery<HeatIdt>, spec);
-      add("CgalHeatIdt_Query", BM_CgalHeatQuery<HeatIdt>, spec);
+      add("CgalHeatIdt_BuildQuery", BM_CgalHeatBuildQuery<HeatVariant::IntrinsicDelaunay>, spec);
+      add("CgalHeatIdt_Query", BM_CgalHeatQuery<HeatVariant::IntrinsicDelaunay>, spec);
     }
     if (std::string(spec.name) == "bunny00") {
       // 200 consecutive sampling steps per repetition, from the 1000th source on.
@@ -771,11 +546,4 @@ void registerAll() {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  registerAll();
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return gr::bench::runBenchmarks(argc, argv, registerAll); }

@@ -14,9 +14,10 @@
 //                         minus the median of 3 runs of the same command without the script (start-up,
 //                         plugin loading, reading and writing the mesh): the filter's own time, about.
 //                         Small meshes only.
-//   Cgal/<mesh>/<target>  CGAL::Polygon_mesh_processing::isotropic_remeshing on a Surface_mesh<Epick>
-//                         copy (copy untimed), 3 iterations, protect_constraints(false). Target edge
-//                         length L calibrated untimed so that its vertex count matches ours: start
+//   Cgal/<mesh>/<target>  CGAL::Polygon_mesh_processing::isotropic_remeshing (gr_oracles:
+//                         tests/oracles/remesh_oracles.h) on a Surface_mesh<Epick> copy (copy
+//                         untimed), 3 iterations, protect_constraints(false). Target edge length L
+//                         calibrated untimed so that its vertex count matches ours: start
 //                         from L = sqrt(2 A / (sqrt(3) N)), then up to 3 runs each followed by
 //                         L *= sqrt(n_obtained / N) (stop when within 1%); on the 1.66M mesh one
 //                         such run only (each takes about 40 s).
@@ -55,10 +56,12 @@
 #include "core/remesh/remesh_surface.h"
 #include "core/mesh/tri_mesh.h"
 #include "core/mesh/vcg_mesh.h"
+#include "tests/oracles/remesh_oracles.h"
 
 namespace {
 
-using gr::bench::SurfaceMesh;
+using gr::bench::MeshSpec;
+using gr::oracle::SurfaceMesh;
 
 constexpr int kCgalIterations = 3;   ///< isotropic_remeshing's number_of_iterations
 constexpr int kCalibrationRuns = 3;  ///< untimed CGAL runs to match the vertex count
@@ -67,12 +70,6 @@ constexpr double kCalibrationTolerance = 0.01;
 
 // ------------------------------------------------------------------------------------------------
 // Meshes
-
-struct MeshSpec {
-  const char* name;
-  const char* file;
-  int subdivisions;
-};
 
 /// One remeshing problem: a mesh and a target sample count (fraction of its vertices, or absolute).
 struct Case {
@@ -95,6 +92,8 @@ const Case kCases[] = {
 
 /// A mesh, its statistics and its CGAL copy, built once per process (never timed).
 struct BenchMesh {
+  explicit BenchMesh(gr::TriMesh mesh)
+      : tri(std::move(mesh)), angles(gr::angleStatistics(tri)), diagonal(tri.boundingBoxDiagonal()) {}
   gr::TriMesh tri;
   gr::AngleStatistics angles;
   double diagonal = 0.0;
@@ -102,19 +101,7 @@ struct BenchMesh {
 };
 
 BenchMesh* getMesh(benchmark::State& state, const MeshSpec& spec) {
-  static std::map<std::string, std::unique_ptr<BenchMesh>> cache;
-  auto& slot = cache[spec.name];
-  if (slot) return slot.get();
-  gr::Expected<gr::TriMesh> m = gr::bench::loadBenchMesh(spec.file, spec.subdivisions);
-  if (!m) {
-    state.SkipWithError(("mesh " + std::string(spec.name) + ": " + m.status().message).c_str());
-    return nullptr;
-  }
-  slot = std::make_unique<BenchMesh>();
-  slot->tri = std::move(*m);
-  slot->angles = gr::angleStatistics(slot->tri);
-  slot->diagonal = slot->tri.boundingBoxDiagonal();
-  return slot.get();
+  return gr::bench::cachedMesh<BenchMesh>(state, spec);
 }
 
 int targetCount(const Case& c, const BenchMesh& bm) {
@@ -166,7 +153,7 @@ void setQualityCounters(benchmark::State& state, const BenchMesh& bm, const gr::
   c["in_angle_min"] = bm.angles.minDegrees;
   c["in_lt30_pct"] = 100.0 * bm.angles.shareMinBelow30;
   // One-sided (output to input), and two-sided with the RMS over both directions' samples.
-  const gr::bench::TwoSidedDistance both = gr::bench::twoSidedDistance(out, bm.tri);
+  const gr::oracle::TwoSidedDistance both = gr::oracle::twoSidedDistance(out, bm.tri);
   c["hausdorff_pct"] = 100.0 * gr::surfaceDistance(out, bm.tri).max / bm.diagonal;
   c["hausdorff2_pct"] = 100.0 * both.max / bm.diagonal;
   c["rms2_pct"] = 100.0 * both.rms / bm.diagonal;
@@ -229,29 +216,16 @@ void BM_Cgal(benchmark::State& state, const Case& c) {
   if (!match) return;
   const double n = *match;
   // Calibrated once per case (the repetitions reuse it).
-  static std::map<std::string, gr::bench::CgalCalibration> calibrated;
-  gr::bench::CgalCalibration& calibration = calibrated[c.key()];
+  static std::map<std::string, gr::oracle::CgalCalibration> calibrated;
+  gr::oracle::CgalCalibration& calibration = calibrated[c.key()];
   if (calibration.runs == 0)
-    calibration = gr::bench::calibrateCgalEdgeLength(*input, n, kCgalIterations,
+    calibration = gr::oracle::calibrateCgalEdgeLength(*input, n, kCgalIterations,
                                                      c.mesh.subdivisions > 0 ? kCalibrationRunsLarge : kCalibrationRuns,
                                                      kCalibrationTolerance);
   const double length = calibration.edgeLength;
   const int calibrationRuns = calibration.runs;
-  std::optional<SurfaceMesh> out;
-  for (auto _ : state) {
-    state.PauseTiming();
-    SurfaceMesh m = *input;
-    state.ResumeTiming();
-    gr::bench::cgalIsotropicRemeshing(m, length, kCgalIterations);
-    state.PauseTiming();
-    out = std::move(m);  // freeing the output is not timed either
-    state.ResumeTiming();
-  }
-  gr::Expected<gr::TriMesh> tri = gr::bench::toTriMesh(*out);
-  if (!tri) {
-    state.SkipWithError(("CGAL output: " + tri.status().message).c_str());
-    return;
-  }
+  const std::optional<gr::TriMesh> tri = gr::bench::timeCgalRemeshing(state, *input, length, kCgalIterations);
+  if (!tri) return;
   state.counters["edge_length"] = length;
   state.counters["calibration_runs"] = calibrationRuns;
   setQualityCounters(state, *bm, *tri, static_cast<int>(n));
@@ -294,7 +268,7 @@ void BM_MeshLabIsotropic(benchmark::State& state, const Case& c) {
     return;
   }
   const std::string dir = dirTemplate, script = dir + "/script.mlx", out = dir + "/out.off", log = dir + "/log.txt";
-  const std::string input = std::string(GR_MESH_DIR) + "/" + c.mesh.file;
+  const std::string input = gr::bench::benchMeshPath(c.mesh.file);
   const std::string startup = "xvfb-run -a meshlabserver -i '" + input + "' -o '" + out + "' > '" + log + "' 2>&1";
   const std::string command = "xvfb-run -a meshlabserver -i '" + input + "' -o '" + out + "' -s '" + script +
                               "' > '" + log + "' 2>&1";
@@ -381,11 +355,4 @@ void registerAll() {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  registerAll();
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return gr::bench::runBenchmarks(argc, argv, registerAll); }

@@ -1,55 +1,74 @@
-// What the benchmarks share: the test meshes (optionally subdivided), CGAL's
-// Surface_mesh to and from a TriMesh, CGAL's isotropic remeshing, and the surface distance both
-// ways. Never timed themselves unless a benchmark says so.
+// Benchmark plumbing the benchmark binaries share: the test meshes (optionally subdivided), cached
+// once per process; the CGAL copy of a mesh, cached, or the benchmark skipped when CGAL rejects it;
+// and main(). The competitors themselves (Dijkstra, vcglib, CGAL) live in tests/oracles
+// (gr_oracles). Nothing here is timed unless a benchmark says so.
 #pragma once
 
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include <benchmark/benchmark.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
-
 #include "core/base/status.h"
 #include "core/mesh/tri_mesh.h"
+#include "tests/oracles/cgal_mesh.h"
 
 namespace gr::bench {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
-using SmVertex = SurfaceMesh::Vertex_index;
-
-/// A mesh of GR_MESH_DIR ("bunny00.off"), after `subdivisions` 1-to-4 midpoint subdivisions.
+/// A mesh of GR_MESH_DIR ("bunny00.off"), after `subdivisions` 1-to-4 midpoint subdivisions
+/// (gr::subdivideMidpoint: old vertices keep their indices).
 Expected<TriMesh> loadBenchMesh(const std::string& file, int subdivisions = 0);
 
-/// A CGAL copy of a mesh (fails, naming the face, when Surface_mesh rejects one).
-Expected<std::unique_ptr<SurfaceMesh>> toSurfaceMesh(const TriMesh& mesh);
-/// `slot`, filled with toSurfaceMesh(mesh) on first use (never timed); nullptr after marking the
-/// benchmark skipped when CGAL rejects the mesh.
-SurfaceMesh* cachedSurfaceMesh(benchmark::State& state, const TriMesh& mesh, std::unique_ptr<SurfaceMesh>& slot);
-/// Back to a TriMesh (garbage collected first).
-Expected<TriMesh> toTriMesh(SurfaceMesh& mesh);
+/// The path of a mesh of GR_MESH_DIR.
+std::string benchMeshPath(const std::string& file);
 
-/// CGAL's isotropic remeshing of the whole mesh in place, without protected constraints.
-void cgalIsotropicRemeshing(SurfaceMesh& mesh, double edgeLength, int iterations);
-
-/// The target edge length for which CGAL's isotropic remeshing gives about `n` vertices: from
-/// L = sqrt(2 A / (sqrt(3) n)) (equilateral triangles of area A / (2n)), then up to `maxRuns`
-/// untimed runs, each followed by L *= sqrt(n_obtained / n), stopping within `tolerance`.
-struct CgalCalibration {
-  double edgeLength = 0.0;
-  int runs = 0;
+/// A benchmark mesh: its name in the benchmarks' names, its file in GR_MESH_DIR, and how many
+/// 1-to-4 midpoint subdivisions make it from that file.
+struct MeshSpec {
+  const char* name;
+  const char* file;
+  int subdivisions;
 };
-CgalCalibration calibrateCgalEdgeLength(const SurfaceMesh& input, double n, int iterations, int maxRuns,
-                                        double tolerance);
 
-/// Two-sided distance between surfaces (gr::surfaceDistance both ways): the larger maximum, and
-/// the RMS over both directions' samples.
-struct TwoSidedDistance {
-  double max = 0.0;
-  double rms = 0.0;
-};
-TwoSidedDistance twoSidedDistance(const TriMesh& a, const TriMesh& b);
+/// The `T` of mesh `name`, made once per process as T(loadBenchMesh(file, subdivisions)) (never
+/// timed); a filter that excludes every benchmark of a mesh never loads it. nullptr after marking
+/// the benchmark skipped when the mesh cannot be loaded.
+template <class T>
+T* cachedMesh(benchmark::State& state, const std::string& name, const std::string& file, int subdivisions = 0) {
+  static std::map<std::string, std::unique_ptr<T>> cache;
+  std::unique_ptr<T>& slot = cache[name];
+  if (slot) return slot.get();
+  Expected<TriMesh> m = loadBenchMesh(file, subdivisions);
+  if (!m) {
+    state.SkipWithError(("mesh " + name + ": " + m.status().message).c_str());
+    return nullptr;
+  }
+  slot = std::make_unique<T>(std::move(*m));
+  return slot.get();
+}
+
+template <class T>
+T* cachedMesh(benchmark::State& state, const MeshSpec& spec) {
+  return cachedMesh<T>(state, spec.name, spec.file, spec.subdivisions);
+}
+
+/// `slot`, filled with oracle::toSurfaceMesh(mesh) on first use (never timed); nullptr after
+/// marking the benchmark skipped when CGAL rejects the mesh.
+oracle::SurfaceMesh* cachedSurfaceMesh(benchmark::State& state, const TriMesh& mesh,
+                                       std::unique_ptr<oracle::SurfaceMesh>& slot);
+
+/// CGAL's isotropic remeshing (oracle::cgalIsotropicRemeshing, `iterations` rounds towards
+/// `edgeLength`) timed in the benchmark loop, each iteration on a fresh copy of `input` (making
+/// the copy and freeing the output are not timed). The last output as a TriMesh; nullopt after
+/// marking the benchmark skipped when it cannot be converted.
+std::optional<TriMesh> timeCgalRemeshing(benchmark::State& state, const oracle::SurfaceMesh& input, double edgeLength,
+                                         int iterations);
+
+/// The whole main() of a benchmark binary: Google Benchmark's arguments, then `registerAll()`,
+/// then the benchmarks the filter selects.
+int runBenchmarks(int argc, char** argv, void (*registerAll)());
 
 }  // namespace gr::bench

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The remeshing benchmark: installs what is missing, builds bench_remesh, runs it (ours and CGAL's
-# isotropic remeshing in one process, same meshes, same vertex counts), then prints a markdown
-# table of times, ratios and triangle quality.
+# The remeshing benchmark: installs what is missing, builds bench_remesh, runs it (ours, i.e.
+# gr::remeshSurface as the uniform filter runs it, and CGAL's isotropic remeshing in one process,
+# MeshLab's isotropic explicit remeshing through the system meshlabserver; same meshes, same vertex
+# counts), then prints a markdown table of times, ratios and triangle quality.
 #   bash scripts/bench_remesh.sh                               # everything (~9 min on 2 cores)
 #   bash scripts/bench_remesh.sh --benchmark_filter=-sub3      # extra arguments go to the binary
 # Output: $BUILD_DIR/bench_remesh.json (the run) and the table on stdout.
@@ -40,11 +41,16 @@ def t(x):
     return "—" if x is None else (f"{x / 1000:.3g} s" if x >= 1000 else f"{x:.3g} ms")
 
 print(f"Run: {ctx.get('date', '?')} on {ctx.get('host_name', '?')}, {ctx.get('num_cpus', '?')} CPUs, "
-      f"load average {ctx.get('load_avg', '?')}; CPU time per run, median of the repetitions; "
-      "ratio = CGAL's or MeshLab's time / our time (> 1: ours is faster); MeshLab isotropic: MeshLab's "
+      f"load average {ctx.get('load_avg', '?')}; time per run, median of the repetitions: the process's CPU "
+      "time for ours and CGAL; ratio = CGAL's or MeshLab's time / our time (> 1: ours is faster); ours: "
+      "gr::remeshSurface, what the uniform filter runs (its log's measures off), time = CPU time of the whole call "
+      "(all threads: the engine's construction uses a helper thread); engine (FastMarcher construction), "
+      "sampling, triangulation (geodesic Delaunay with its repair and flips), relaxation: each stage's wall "
+      "time (RemeshStageTimes; the preparation, orientation included, is in the time only); CGAL: "
+      "isotropic_remeshing, 3 iterations, on a copy of the input (copy untimed), edge length L calibrated untimed "
+      "to our vertex count; MeshLab isotropic: MeshLab's "
       "Remeshing: Isotropic Explicit Remeshing through meshlabserver (bench/meshlab_isotropic_remeshing.mlx), "
-      "wall time minus the start-up time (the same command without the script); ours: time = engine (FastMarcher construction) "
-      "+ sampling + triangulation + relaxation; quality: std of all angles, smallest angle, "
+      "wall time minus the start-up time (the same command without the script); quality: std of all angles, smallest angle, "
       "% of triangles with an angle under 30°, Hausdorff distance output → input (one-sided) and both ways "
       "(two-sided), and the RMS distance both ways, in % of the input's bounding-box diagonal; "
       "ours: the filter's defaults (3 rounds of relaxation); ours, no relaxation: the paper's triangulation "

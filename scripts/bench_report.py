@@ -6,9 +6,11 @@
 Benchmarks are named <Family>/<mesh>[/...]. Every ratio is competitor time / our time, taken from
 the same JSON (same process, same machine state): > 1 means ours is faster. The reference is
 Ours_FastMarcher (reused engine) for the single-source families and FpsStep_Ours_FullRecompute for
-the farthest-point-sampling step. Times are CPU time unless --real-time is given (the benchmark
-is single-threaded, so CPU time is wall time minus what other processes took from it); with
-repetitions, the median of the repetitions, and "spread" = (max - min) / median.
+the farthest-point-sampling step. Times are the process's CPU time (all threads: the FastMarcher
+constructor in Ours_fastMarching_oneshot runs a helper thread; the rest is single-threaded) unless
+--real-time is given; the manual-time benchmarks (FpsStep_*_Incremental) are the wall time of the
+step alone. With repetitions, the median of the repetitions, and "spread" = (max - min) / median.
+The competitors are gr_oracles' (tests/oracles/geodesic_oracles.h).
 """
 import argparse
 import json
@@ -194,7 +196,7 @@ def main():
     if not res:
         sys.exit(f"{args.json}: no benchmark results")
 
-    basis = "wall-clock (real) time" if args.real_time else "CPU time"
+    basis = "wall-clock (real) time" if args.real_time else "the process's CPU time"
     print(f"Run: {ctx.get('date', '?')} on {ctx.get('host_name', '?')}, {ctx.get('num_cpus', '?')} CPUs "
           f"at {ctx.get('mhz_per_cpu', '?')} MHz, load average {ctx.get('load_avg', '?')}; "
           f"times are {basis} per run; ratio = method time / our time (> 1: ours is faster).")

@@ -1,0 +1,34 @@
+// Independent references for remeshing: CGAL's isotropic remeshing (the competitor of the uniform
+// and adaptive remeshers, at an equal vertex count) and the two-sided surface distance every
+// remeshing comparison measures its outputs with.
+#pragma once
+
+#include "core/mesh/tri_mesh.h"
+#include "tests/oracles/cgal_mesh.h"
+
+namespace gr::oracle {
+
+/// CGAL::Polygon_mesh_processing::isotropic_remeshing of the whole mesh in place, without
+/// protected constraints, `iterations` rounds towards the target edge length.
+void cgalIsotropicRemeshing(SurfaceMesh& mesh, double edgeLength, int iterations);
+
+/// The target edge length for which CGAL's isotropic remeshing gives about `n` vertices: from
+/// L = sqrt(2 A / (sqrt(3) n)) (equilateral triangles of area A / (2n)), then up to `maxRuns`
+/// runs on copies of `input`, each followed by L *= sqrt(n_obtained / n), stopping within
+/// `tolerance` (relative).
+struct CgalCalibration {
+  double edgeLength = 0.0;
+  int runs = 0;
+};
+CgalCalibration calibrateCgalEdgeLength(const SurfaceMesh& input, double n, int iterations, int maxRuns,
+                                        double tolerance);
+
+/// Two-sided distance between surfaces (gr::surfaceDistance both ways): the larger maximum, and
+/// the RMS over both directions' samples, sqrt((rms_ab^2 + rms_ba^2) / 2).
+struct TwoSidedDistance {
+  double max = 0.0;
+  double rms = 0.0;
+};
+TwoSidedDistance twoSidedDistance(const TriMesh& a, const TriMesh& b);
+
+}  // namespace gr::oracle

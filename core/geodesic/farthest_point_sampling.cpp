@@ -87,14 +87,6 @@ Status checkFpsParams(const TriMesh& mesh, const FpsParams& params) {
   return Status::ok();
 }
 
-/// Per vertex, 1 if it is an end of a boundary edge.
-std::vector<char> boundaryVertexFlags(const TriMesh& mesh) {
-  std::vector<char> onBoundary(mesh.vertexCount(), 0);
-  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
-    if (mesh.oppositeCorner[c] == kBoundary) onBoundary[mesh.vertex(TriMesh::next(c))] = onBoundary[mesh.vertex(TriMesh::prev(c))] = 1;
-  return onBoundary;
-}
-
 /// The first sample: the vertex farthest from a start vertex in a face chosen by `seed`. Leaves
 /// the marcher reset.
 Expected<int> firstSample(FastMarcher& marcher, unsigned seed) {

@@ -304,6 +304,14 @@ double TriMesh::meanEdgeLength() const {
   return sum / (3.0 * triangles.size());
 }
 
+std::vector<char> boundaryVertexFlags(const TriMesh& mesh) {
+  std::vector<char> onBoundary(mesh.vertexCount(), 0);
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
+    if (mesh.oppositeCorner[c] == kBoundary)
+      onBoundary[mesh.vertex(TriMesh::next(c))] = onBoundary[mesh.vertex(TriMesh::prev(c))] = 1;
+  return onBoundary;
+}
+
 std::vector<int> facesOfComponent(const TriMesh& mesh, int component) {
   std::vector<int> faces;
   for (int f = 0; f < mesh.faceCount(); ++f)

@@ -94,6 +94,9 @@ void rebuildVertexCorners(TriMesh& mesh);
 /// contiguously instead of through one triangle per corner (random reads on large meshes).
 std::vector<std::array<int, 2>> starNeighbours(const TriMesh& mesh);
 
+/// Per vertex, 1 if it is an end of a boundary edge (an edge with one face), else 0.
+std::vector<char> boundaryVertexFlags(const TriMesh& mesh);
+
 /// Faces whose vertices lie in the given component.
 std::vector<int> facesOfComponent(const TriMesh& mesh, int component);
 

@@ -111,14 +111,6 @@ Status checkInput(const TriMesh& mesh, const std::vector<SurfacePoint>& samples)
   return Status::ok();
 }
 
-/// Per input vertex, 1 if it is on a boundary edge.
-std::vector<char> boundaryVertices(const TriMesh& mesh) {
-  std::vector<char> onBoundary(mesh.vertexCount(), 0);
-  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
-    if (mesh.oppositeCorner[c] == kBoundary) onBoundary[mesh.vertex(TriMesh::next(c))] = onBoundary[mesh.vertex(TriMesh::prev(c))] = 1;
-  return onBoundary;
-}
-
 /// A component the samples do not reach (fewer samples than components) gets one at its lowest
 /// vertex, as the sampling gives each component its first: counted as added by the repair.
 Status sampleUnreachedComponents(FastMarcher& marcher, std::vector<SurfacePoint>& samples) {
@@ -326,7 +318,7 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
                                           const DelaunayParams& params, Progress progress) {
   const TriMesh& mesh = marcher.mesh();
   if (Status s = checkInput(mesh, samples); !s) return s;
-  const std::vector<char> onBoundary = boundaryVertices(mesh);
+  const std::vector<char> onBoundary = boundaryVertexFlags(mesh);
   const int initialCount = static_cast<int>(samples.size());
   if (Status s = sampleUnreachedComponents(marcher, samples); !s) return s;
   for (int round = 0;; ++round) {

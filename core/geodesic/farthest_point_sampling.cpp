@@ -12,19 +12,19 @@ namespace {
 
 /// The point near interior vertex v where the model of the fronts (see the header) is largest,
 /// searched on a barycentric lattice of the faces around v and the faces across their outer
-/// edges. `samplePosition` holds the position of each label's sample. Returns v itself when no
+/// edges. `samplePosition` holds the position of each cell's sample. Returns v itself when no
 /// lattice point beats it; *u receives the model's value at the point.
 SurfacePoint farthestPointNear(const FastMarcher& marcher, int v, const std::vector<Vec3>& samplePosition, double* u) {
   const TriMesh& mesh = marcher.mesh();
   const std::vector<double>& U = marcher.distance();
-  const std::vector<int>& label = marcher.cell();
+  const std::vector<int>& cell = marcher.cell();
   constexpr int kMaxFaces = 64, kMaxVertices = 64;
   int faces[kMaxFaces], nf = 0;
   int verts[kMaxVertices], nvtx = 0;
   const auto addVertex = [&](int w) {
     for (int i = 0; i < nvtx; ++i)
       if (verts[i] == w) return;
-    if (nvtx < kMaxVertices && label[w] >= 0 && std::isfinite(U[w])) verts[nvtx++] = w;
+    if (nvtx < kMaxVertices && cell[w] >= 0 && std::isfinite(U[w])) verts[nvtx++] = w;
   };
   for (const int* c = mesh.cornersBegin(v); c != mesh.cornersEnd(v) && nf < kMaxFaces; ++c) {
     faces[nf++] = TriMesh::face(*c);
@@ -36,13 +36,13 @@ SurfacePoint farthestPointNear(const FastMarcher& marcher, int v, const std::vec
   // Per vertex of the neighbourhood: its front's offset U(w) - |w - s_L|.
   double offset[kMaxVertices];
   for (int i = 0; i < nvtx; ++i)
-    offset[i] = U[verts[i]] - (mesh.positions[verts[i]] - samplePosition[label[verts[i]]]).norm();
+    offset[i] = U[verts[i]] - (mesh.positions[verts[i]] - samplePosition[cell[verts[i]]]).norm();
   const auto model = [&](const Vec3& p) {
     double best = kUnreached;
     for (int i = 0; i < nvtx; ++i) {
       // U_L(p) for w's front; the minimum over all w is the minimum over fronts of their
       // estimate from the nearest-in-value vertex, a safe (low) side of the model.
-      best = std::min(best, offset[i] + (p - samplePosition[label[verts[i]]]).norm());
+      best = std::min(best, offset[i] + (p - samplePosition[cell[verts[i]]]).norm());
     }
     return best;
   };

@@ -55,7 +55,7 @@ Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& met
                                           Progress progress = {});
 
 /// The same on a caller's engine (reset first). On return the engine holds the field of the
-/// samples, labelled by their index, so the next stage (geodesicDelaunay) can go on from it.
+/// samples, each the source of its own cell (its index), so the next stage (geodesicDelaunay) can go on from it.
 Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams& params = {}, Progress progress = {});
 
 }  // namespace gr

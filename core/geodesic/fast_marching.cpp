@@ -155,14 +155,14 @@ void FastMarcher::beginRun() {
   saved_.clear();
 }
 
-Status FastMarcher::addSource(int v, int label) {
+Status FastMarcher::addSource(int v, int cell) {
   if (v < 0 || v >= mesh_.vertexCount())
     return invalidInput("source vertex " + std::to_string(v) + " does not exist (the mesh has " +
                         std::to_string(mesh_.vertexCount()) + " vertices)");
   beginRun();
   if (node_[slotOf_[v]].u <= 0.0) return Status::ok();
   const int sv = slotOf_[v];
-  push(sv, 0.0, label);
+  push(sv, 0.0, cell);
   // The faces around v, v at the origin, read from its star records: their vertices get the
   // edge lengths; the vertex across each outer edge gets the straight line from v in the
   // unfolding when that line crosses the edge (what seedByUnfolding does one ring deep, without
@@ -172,8 +172,8 @@ Status FastMarcher::addSource(int v, int label) {
   const StarFace* const first = star_.data() + starBegin_[sv];
   const StarFace* const last = star_.data() + starBegin_[sv + 1];
   for (const StarFace* f = first; f != last; ++f) {
-    relax(f->a, 0.5 * (pv + P_[f->a]) * f->lva, label);
-    relax(f->b, 0.5 * (pv + P_[f->b]) * f->lvb, label);
+    relax(f->a, 0.5 * (pv + P_[f->a]) * f->lva, cell);
+    relax(f->b, 0.5 * (pv + P_[f->b]) * f->lvb, cell);
     if (!(f->lva > 0.0)) continue;
     int r = -1;
     double lar = 0.0, lbr = 0.0;
@@ -191,13 +191,13 @@ Status FastMarcher::addSource(int v, int label) {
     const Vec2 a(f->lva, 0.0), b = layoutThirdVertex(f->lva, f->lvb, f->lab);
     if ((b - a).squaredNorm() <= 0.0) continue;
     const Vec2 q = unfold(a, b, Vec2(0.0, 0.0), lar, lbr);
-    if (segmentsIntersect(Vec2(0.0, 0.0), q, a, b)) relax(r, 0.5 * (pv + P_[r]) * q.norm(), label);
+    if (segmentsIntersect(Vec2(0.0, 0.0), q, a, b)) relax(r, 0.5 * (pv + P_[r]) * q.norm(), cell);
   }
   return Status::ok();
 }
 
 void FastMarcher::seedByUnfolding(const Vec2& p, double pAtSource, int face, const std::array<Vec2, 3>& layout,
-                                  int enteredThrough, int depth, int label) {
+                                  int enteredThrough, int depth, int cell) {
   // A straight segment from p that crosses every edge of the chain is a path on the surface.
   for (int k = 0; k < 3; ++k) {
     bool inside = true;
@@ -205,7 +205,7 @@ void FastMarcher::seedByUnfolding(const Vec2& p, double pAtSource, int face, con
       inside = segmentsIntersect(p, layout[k], seedChain_[e].first, seedChain_[e].second);
     if (inside) {
       const int w = slotOf_[mesh_.triangles[face][k]];
-      relax(w, 0.5 * (pAtSource + P_[w]) * (layout[k] - p).norm(), label);
+      relax(w, 0.5 * (pAtSource + P_[w]) * (layout[k] - p).norm(), cell);
     }
   }
   if (depth == 0) return;
@@ -230,13 +230,13 @@ void FastMarcher::seedByUnfolding(const Vec2& p, double pAtSource, int face, con
       next[j] = mesh_.vertex(corner) == mesh_.vertex(cn) ? q1 : q2;
     }
     seedChain_.push_back({q1, q2});
-    seedByUnfolding(p, pAtSource, g, next, o, depth - 1, label);
+    seedByUnfolding(p, pAtSource, g, next, o, depth - 1, cell);
     seedChain_.pop_back();
   }
 }
 
-Status FastMarcher::addSource(const SurfacePoint& point, int label) {
-  if (point.vertex >= 0) return addSource(point.vertex, label);
+Status FastMarcher::addSource(const SurfacePoint& point, int cell) {
+  if (point.vertex >= 0) return addSource(point.vertex, cell);
   if (point.face < 0 || point.face >= mesh_.faceCount())
     return invalidInput("source face " + std::to_string(point.face) + " does not exist");
   const Vec3& b = point.bary;
@@ -250,27 +250,27 @@ Status FastMarcher::addSource(const SurfacePoint& point, int label) {
   const double l01 = cornerEdgeLength(3 * f + 2), l02 = cornerEdgeLength(3 * f + 1), l12 = cornerEdgeLength(3 * f);
   const std::array<Vec2, 3> layout = {Vec2(0.0, 0.0), Vec2(l01, 0.0), layoutThirdVertex(l01, l02, l12)};
   const Vec2 p = b[0] * layout[0] + b[1] * layout[1] + b[2] * layout[2];
-  seedByUnfolding(p, pAtPoint, f, layout, -1, kSeedDepthFace, label);
+  seedByUnfolding(p, pAtPoint, f, layout, -1, kSeedDepthFace, cell);
   return Status::ok();
 }
 
 // push and offerTriangle are forced inline into the hot loop: GCC keeps them out of line at -O2,
 // which costs a call per neighbour update.
-[[gnu::always_inline]] inline void FastMarcher::push(int v, double u, int label) {
+[[gnu::always_inline]] inline void FastMarcher::push(int v, double u, int cell) {
   Node& n = node_[v];
   if (n.u == kUnreached) {
     touched_.push_back(v);
   } else if (n.run != 0) {  // a value of an earlier run, improved: keep it to restore
-    saved_.push_back({v, n.label, n.run, n.u});
+    saved_.push_back({v, n.cell, n.run, n.u});
     n.run = 0;
   }
   n.u = u;
-  n.label = label;
+  n.cell = cell;
   heap_.pushOrDecrease(v, u);
 }
 
-void FastMarcher::relax(int x, double u, int label) {
-  if (u < node_[x].u) push(x, u, label);
+void FastMarcher::relax(int x, double u, int cell) {
+  if (u < node_[x].u) push(x, u, cell);
 }
 
 template <bool kUniform>
@@ -288,9 +288,9 @@ template <bool kUniform>
     u = p * virtualSourceDistance(frame, us * q, ut * q);
   }
   // Causality: a value below a neighbour's would break the acceptance order (obtuse angles).
-  // The label of the nearer vertex. Updates that mix two fronts are kept on purpose: skipping
+  // The cell of the nearer vertex. Updates that mix two fronts are kept on purpose: skipping
   // them would make a multi-source field depend on the order the sources were added.
-  if (u < best.u && u >= std::max(us, ut)) best = {u, us <= ut ? node_[s].label : node_[t].label};
+  if (u < best.u && u >= std::max(us, ut)) best = {u, us <= ut ? node_[s].cell : node_[t].cell};
 }
 
 template <bool kUniform>
@@ -301,7 +301,7 @@ void FastMarcher::scatter(int v) {
   const StarFace* const star = star_.data();
   const StarCost* const cost = kUniform ? nullptr : starCost_.data();
   const double uv = node[v].u;
-  const int lv = node[v].label;
+  const int cellOfV = node[v].cell;
   // The mean P of a virtual triangle (acute splits): read from P_ (rare).
   const auto meanP = [this](int x, int s, int t) {
     return kUniform ? 1.0 : (P_[x] + P_[s] + P_[t]) * (1.0 / 3.0);
@@ -315,25 +315,25 @@ void FastMarcher::scatter(int v) {
     const StarFace f = star[k];
     if (node[f.a].run != run_) {  // target a, third vertex b
       const double ua = node[f.a].u;
-      Candidate best{uv + (kUniform ? f.lva : cost[k].edgeA), lv};
+      Candidate best{uv + (kUniform ? f.lva : cost[k].edgeA), cellOfV};
       if (!(best.u < ua)) best.u = ua;
       if (known(f.b)) offerTriangle<kUniform>(best, f.a, v, f.b, f.lva, f.lab, f.lvb, kUniform ? 1.0 : cost[k].face);
       if (f.split >= 0 && (f.split & 1) == 0) {  // obtuse at a: the virtual triangle a, v, R (v is B of that corner)
         const NearSplit& sp = nearSplits_[f.split >> 1];
         if (known(sp.r)) offerTriangle<kUniform>(best, f.a, v, sp.r, f.lva, sp.lenXR, sp.lenBR, meanP(f.a, v, sp.r));
       }
-      if (best.u < ua) push(f.a, best.u, best.label);
+      if (best.u < ua) push(f.a, best.u, best.cell);
     }
     if (node[f.b].run != run_) {  // target b, third vertex a
       const double ub = node[f.b].u;
-      Candidate best{uv + (kUniform ? f.lvb : cost[k].edgeB), lv};
+      Candidate best{uv + (kUniform ? f.lvb : cost[k].edgeB), cellOfV};
       if (!(best.u < ub)) best.u = ub;
       if (known(f.a)) offerTriangle<kUniform>(best, f.b, v, f.a, f.lvb, f.lab, f.lva, kUniform ? 1.0 : cost[k].face);
       if (f.split >= 0 && (f.split & 1) == 1) {  // obtuse at b: v is A of that corner
         const NearSplit& sp = nearSplits_[f.split >> 1];
         if (known(sp.r)) offerTriangle<kUniform>(best, f.b, v, sp.r, f.lvb, sp.lenXR, sp.lenAR, meanP(f.b, v, sp.r));
       }
-      if (best.u < ub) push(f.b, best.u, best.label);
+      if (best.u < ub) push(f.b, best.u, best.cell);
     }
   }
   // v as the far vertex R of acute splits: the virtual triangles X, A, R and X, B, R.
@@ -341,10 +341,10 @@ void FastMarcher::scatter(int v) {
     const FarSplit& sp = farSplits_[i];
     const int x = sp.x, a = sp.a, b = sp.b;
     if (node[x].run == run_) continue;
-    Candidate best{node[x].u, node[x].label};
+    Candidate best{node[x].u, node[x].cell};
     if (known(a)) offerTriangle<kUniform>(best, x, a, v, sp.lenXA, sp.lenXR, sp.lenAR, meanP(x, a, v));
     if (known(b)) offerTriangle<kUniform>(best, x, b, v, sp.lenXB, sp.lenXR, sp.lenBR, meanP(x, b, v));
-    if (best.u < node[x].u) push(x, best.u, best.label);
+    if (best.u < node[x].u) push(x, best.u, best.cell);
   }
 }
 
@@ -394,13 +394,13 @@ Status FastMarcher::propagate(const FastMarchingParams& params, Progress progres
 void FastMarcher::endRun() {
   // Values still tentative are not distances: restore what earlier runs had, clear the rest.
   for (const Saved& s : saved_)
-    if (node_[s.v].run != run_) node_[s.v] = Node{s.u, s.run, s.label};
+    if (node_[s.v].run != run_) node_[s.v] = Node{s.u, s.run, s.cell};
   for (const IndexedHeap::Entry& e : heap_.entries())
     if (node_[e.v].run == 0) node_[e.v] = Node{kUnreached, 0, -1};
   // The public arrays: only vertices this run changed.
   const auto publish = [this](int slot) {
     U_[vertexOf_[slot]] = node_[slot].u;
-    cell_[vertexOf_[slot]] = node_[slot].label;
+    cell_[vertexOf_[slot]] = node_[slot].cell;
   };
   acceptedVertices_.clear();
   for (int slot : accepted_) {

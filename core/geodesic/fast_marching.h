@@ -64,17 +64,17 @@ class FastMarcher {
 
   /// Forgets all sources and distances. Cost: O(vertices ever reached since the last reset).
   void reset();
-  /// Adds vertex `v` as a source (U = 0) with a label. InvalidInput if v is out of range. A
-  /// vertex that already has U = 0 keeps its label.
-  Status addSource(int v, int label);
+  /// Adds vertex `v` as a source (U = 0) in Voronoi cell `cell`. InvalidInput if v is out of range. A
+  /// vertex that already has U = 0 keeps its cell.
+  Status addSource(int v, int cell);
   /// Adds a surface point (vertex, or face + barycentric) as a source; the vertices of the
   /// faces around it, up to three rings, get straight-line distances in the unfolding.
-  Status addSource(const SurfacePoint& point, int label);
+  Status addSource(const SurfacePoint& point, int cell);
   /// Runs the front from the sources added since the last run, entering only vertices it
   /// improves. Cancelled if `progress` says so (the field is then partial).
   Status propagate(const FastMarchingParams& params = {}, Progress progress = {});
 
-  /// U and nearest-source label per vertex, as of the end of the last propagate().
+  /// U and nearest-source cell per vertex, as of the end of the last propagate().
   const std::vector<double>& distance() const { return U_; }
   const std::vector<int>& cell() const { return cell_; }
   /// Vertices accepted by the last propagate(), in order: all reached vertices for a first
@@ -103,10 +103,10 @@ class FastMarcher {
   void buildSplitRecords(const AcuteSplits& splits);
 
   void beginRun();
-  void push(int v, double u, int label);
+  void push(int v, double u, int cell);
   bool known(int v) const { return node_[v].run != 0; }
-  /// Offers x the value u (edge update) with the given label.
-  void relax(int x, double u, int label);
+  /// Offers x the value u (edge update) with the given cell.
+  void relax(int x, double u, int cell);
   /// Offers x the update of the (possibly virtual) triangle x, s, t; s and t are known. `p` is
   /// the triangle's mean P (unused with a uniform metric).
   template <bool kUniform>
@@ -119,7 +119,7 @@ class FastMarcher {
   /// source point in the unfolding of those faces (kSeedDepth rings): exact values where a point
   /// source is too close for the triangle updates to be causal.
   void seedByUnfolding(const Vec2& p, double pAtSource, int face, const std::array<Vec2, 3>& layout,
-                       int enteredThrough, int depth, int label);
+                       int enteredThrough, int depth, int cell);
   void endRun();
 
 
@@ -137,7 +137,7 @@ class FastMarcher {
   std::vector<int> farSplitBegin_;
   std::vector<FarSplit> farSplits_;
   std::vector<Node> node_;
-  std::vector<double> U_;           ///< public copies of node_.u and node_.label, updated at the
+  std::vector<double> U_;           ///< public copies of node_.u and node_.cell, updated at the
   std::vector<int> cell_;           ///< end of each run for the vertices it changed
   int run_ = 0;
   bool runOpen_ = false;

@@ -15,22 +15,22 @@
 namespace gr {
 namespace {
 
-/// The dual triangles of a labelling, and the cells to repair if it is not a valid mesh with
+/// The dual triangles of a cell assignment, and the cells to repair if it is not a valid mesh with
 /// the given topology.
 struct Dual {
   std::vector<Tri> triangles;
   std::vector<int> badCells;
 };
 
-Dual buildDual(const TriMesh& mesh, const std::vector<int>& label, int cellCount) {
-  // Faces with three labels, keyed by their sorted label triple, sorted so a triple met twice
+Dual buildDual(const TriMesh& mesh, const std::vector<int>& cell, int cellCount) {
+  // Faces in three cells, keyed by their sorted cell triple, sorted so a triple met twice
   // (three cells meeting twice) sits next to its twin.
-  using Keyed = std::pair<std::array<int, 3>, int>;  // (sorted labels, face)
+  using Keyed = std::pair<std::array<int, 3>, int>;  // (sorted cells, face)
   std::vector<Keyed> found;
-  std::vector<int> bucketBegin(cellCount + 1, 0);  // counting sort on the smallest label
+  std::vector<int> bucketBegin(cellCount + 1, 0);  // counting sort on the smallest cell
   for (int f = 0; f < mesh.faceCount(); ++f) {
     const Tri& t = mesh.triangles[f];
-    std::array<int, 3> key = {label[t[0]], label[t[1]], label[t[2]]};
+    std::array<int, 3> key = {cell[t[0]], cell[t[1]], cell[t[2]]};
     if (key[0] == key[1] || key[1] == key[2] || key[2] == key[0]) continue;
     if (key[0] < 0 || key[1] < 0 || key[2] < 0) continue;  // a vertex no front reached
     std::sort(key.begin(), key.end());
@@ -51,7 +51,7 @@ Dual buildDual(const TriMesh& mesh, const std::vector<int>& label, int cellCount
     size_t b = a + 1;
     while (b < keyed.size() && keyed[b].first == keyed[a].first) ++b;
     const Tri& t = mesh.triangles[keyed[a].second];
-    const int i = label[t[0]], j = label[t[1]], k = label[t[2]];
+    const int i = cell[t[0]], j = cell[t[1]], k = cell[t[2]];
     if (b - a > 1) {  // three cells meeting twice
       bad[i] = bad[j] = bad[k] = 1;
     } else {
@@ -134,12 +134,12 @@ Status sampleUnreachedComponents(FastMarcher& marcher, std::vector<SurfacePoint>
 
 /// Cells that reach the input's boundary while their sample is off it (the output's boundary
 /// would cut across the surface), appended to `bad`. `sampleOnBoundary` is per cell.
-void addCellsWithSampleOffBoundary(const std::vector<int>& label, const std::vector<char>& onBoundary,
+void addCellsWithSampleOffBoundary(const std::vector<int>& cell, const std::vector<char>& onBoundary,
                                    const std::vector<char>& sampleOnBoundary, std::vector<int>& bad) {
   const int cells = static_cast<int>(sampleOnBoundary.size());
   std::vector<char> cellOnBoundary(cells, 0);
   for (size_t v = 0; v < onBoundary.size(); ++v)
-    if (onBoundary[v] && label[v] >= 0) cellOnBoundary[label[v]] = 1;
+    if (onBoundary[v] && cell[v] >= 0) cellOnBoundary[cell[v]] = 1;
   for (int c = 0; c < cells; ++c)
     if (cellOnBoundary[c] && !sampleOnBoundary[c]) bad.push_back(c);
 }
@@ -160,7 +160,7 @@ bool hasInputTopology(const TriMesh& out, const TriMesh& mesh, const std::vector
 /// the tenth of the cells with the largest distance to their sample (at least one).
 std::vector<int> cellsToRefineForTopology(const FastMarcher& marcher, const TriMesh& out,
                                           const std::vector<int>& cellSize) {
-  const std::vector<int>& label = marcher.cell();
+  const std::vector<int>& cell = marcher.cell();
   const int cells = static_cast<int>(cellSize.size());
   std::vector<int> bad;
   for (int v = 0; v < out.vertexCount(); ++v)
@@ -168,7 +168,7 @@ std::vector<int> cellsToRefineForTopology(const FastMarcher& marcher, const TriM
   if (bad.empty()) {
     std::vector<double> far(cells, 0.0);
     for (int v = 0; v < marcher.mesh().vertexCount(); ++v)
-      if (label[v] >= 0) far[label[v]] = std::max(far[label[v]], marcher.distance()[v]);
+      if (cell[v] >= 0) far[cell[v]] = std::max(far[cell[v]], marcher.distance()[v]);
     std::vector<int> order(cells);
     for (int c = 0; c < cells; ++c) order[c] = c;
     std::sort(order.begin(), order.end(), [&](int a, int b) { return far[a] > far[b]; });
@@ -180,7 +180,7 @@ std::vector<int> cellsToRefineForTopology(const FastMarcher& marcher, const TriM
 /// Renumbers a valid dual without its isolated vertices (the samples of empty cells), in the
 /// mesh, in r.origin and in r.cell (the input vertices' cells).
 Status dropEmptyCells(TriMesh& out, const std::vector<Vec3>& positions, const std::vector<SurfacePoint>& samples,
-                      const std::vector<int>& label, DelaunayResult& r) {
+                      const std::vector<int>& cell, DelaunayResult& r) {
   const int cells = static_cast<int>(samples.size());
   std::vector<int> index(cells, -1);
   std::vector<Vec3> kept;
@@ -196,7 +196,7 @@ Status dropEmptyCells(TriMesh& out, const std::vector<Vec3>& positions, const st
   Expected<TriMesh> renumbered = buildTriMesh(std::move(kept), std::move(tris));
   if (!renumbered) return renumbered.status();
   out = std::move(renumbered).value();
-  r.cell = label;
+  r.cell = cell;
   for (int& l : r.cell)
     if (l >= 0) l = index[l];
   return Status::ok();
@@ -204,16 +204,16 @@ Status dropEmptyCells(TriMesh& out, const std::vector<Vec3>& positions, const st
 
 /// The result from a valid dual: samples of empty cells left out, then the Delaunay flips.
 Expected<DelaunayResult> finishValidDual(TriMesh out, const std::vector<Vec3>& positions,
-                                         const std::vector<SurfacePoint>& samples, const std::vector<int>& label,
+                                         const std::vector<SurfacePoint>& samples, const std::vector<int>& cell,
                                          const DelaunayParams& params, int initialCount, int round) {
   DelaunayResult r;
   const int cells = static_cast<int>(samples.size());
   if (out.topology.isolatedVertices > 0) {  // drop the empty cells' samples, renumber the rest
-    if (Status s = dropEmptyCells(out, positions, samples, label, r); !s) return s;
+    if (Status s = dropEmptyCells(out, positions, samples, cell, r); !s) return s;
     r.droppedSamples = cells - out.vertexCount();
   } else {
     r.origin = samples;
-    r.cell = label;
+    r.cell = cell;
   }
   if (params.delaunayFlips) {
     Expected<DelaunayFlipResult> flipped = flipToDelaunay(out, params.flips);
@@ -230,10 +230,10 @@ Expected<DelaunayResult> finishValidDual(TriMesh out, const std::vector<Vec3>& p
 /// samples, or its farthest boundary vertex if it reaches the boundary (so that boundaries are
 /// sampled on the boundary); -1 for a cell without vertices.
 std::vector<int> farthestVertexPerCell(const FastMarcher& marcher, const std::vector<char>& onBoundary, int cells) {
-  const std::vector<int>& label = marcher.cell();
+  const std::vector<int>& cell = marcher.cell();
   std::vector<int> farthest(cells, -1), farthestOnBoundary(cells, -1);
   for (int v = 0; v < marcher.mesh().vertexCount(); ++v) {
-    const int c = label[v];
+    const int c = cell[v];
     if (c < 0) continue;
     const double u = marcher.distance()[v];
     if (farthest[c] < 0 || u > marcher.distance()[farthest[c]]) farthest[c] = v;
@@ -250,7 +250,7 @@ std::vector<int> farthestVertexPerCell(const FastMarcher& marcher, const std::ve
 std::vector<char> cellsToRefine(const FastMarcher& marcher, const std::vector<SurfacePoint>& samples,
                                 const std::vector<int>& bad, const std::vector<int>& farthest) {
   const TriMesh& mesh = marcher.mesh();
-  const std::vector<int>& label = marcher.cell();
+  const std::vector<int>& cell = marcher.cell();
   std::vector<char> isBad(samples.size(), 0);
   for (int c : bad) isBad[c] = 1;
   for (int c : bad)
@@ -260,7 +260,7 @@ std::vector<char> cellsToRefine(const FastMarcher& marcher, const std::vector<Su
       for (int x : around)
         for (const int* k = mesh.cornersBegin(x); k != mesh.cornersEnd(x); ++k)
           for (int w : {mesh.vertex(TriMesh::next(*k)), mesh.vertex(TriMesh::prev(*k))})
-            if (label[w] >= 0) isBad[label[w]] = 1;
+            if (cell[w] >= 0) isBad[cell[w]] = 1;
     }
   return isBad;
 }
@@ -322,9 +322,9 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
   const int initialCount = static_cast<int>(samples.size());
   if (Status s = sampleUnreachedComponents(marcher, samples); !s) return s;
   for (int round = 0;; ++round) {
-    const std::vector<int>& label = marcher.cell();
+    const std::vector<int>& cell = marcher.cell();
     const int cells = static_cast<int>(samples.size());
-    Dual dual = buildDual(mesh, label, cells);
+    Dual dual = buildDual(mesh, cell, cells);
     std::vector<int> bad = dual.badCells;
     std::vector<Vec3> positions(cells);
     for (int c = 0; c < cells; ++c) positions[c] = samples[c].position(mesh);
@@ -334,7 +334,7 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
     // A cell that reaches the input's boundary must have its sample on it.
     std::vector<char> sampleOnBoundary(cells, 0);
     for (int c = 0; c < cells; ++c) sampleOnBoundary[c] = samples[c].vertex >= 0 && onBoundary[samples[c].vertex];
-    addCellsWithSampleOffBoundary(label, onBoundary, sampleOnBoundary, bad);
+    addCellsWithSampleOffBoundary(cell, onBoundary, sampleOnBoundary, bad);
     if (out) {
       const std::vector<int> defects = defectCells(*out, sampleOnBoundary);
       bad.insert(bad.end(), defects.begin(), defects.end());
@@ -342,9 +342,9 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
       // it is left out of the output rather than repaired.
       std::vector<int> cellSize(cells, 0);
       for (int v = 0; v < mesh.vertexCount(); ++v)
-        if (label[v] >= 0) ++cellSize[label[v]];
+        if (cell[v] >= 0) ++cellSize[cell[v]];
       if (bad.empty() && hasInputTopology(*out, mesh, cellSize))
-        return finishValidDual(std::move(out).value(), positions, samples, label, params, initialCount, round);
+        return finishValidDual(std::move(out).value(), positions, samples, cell, params, initialCount, round);
       if (bad.empty()) bad = cellsToRefineForTopology(marcher, *out, cellSize);
     } else {
       for (int c = 0; c < cells; ++c) bad.push_back(c);

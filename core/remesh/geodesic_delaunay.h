@@ -5,7 +5,7 @@
 // Each input face whose three vertices lie in three different Voronoi cells (i, j, k) gives the
 // output triangle (i, j, k), oriented like that face:
 //
-//      cell i  \   cell j          input face (a, b, c), labels (i, j, k)
+//      cell i  \   cell j          input face (a, b, c), cells (i, j, k)
 //               \ /                   -> output triangle (sample i, sample j, sample k)
 //                *   <- three fronts meet
 //                |
@@ -62,7 +62,7 @@ struct DelaunayResult {
 Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> samples,
                                           const DelaunayParams& params = {}, Progress progress = {});
 
-/// The same on an engine that already holds the field of `samples` with labels 0..n-1 in that
+/// The same on an engine that already holds the field of `samples` with cells 0..n-1 in that
 /// order (as farthestPointSampling leaves it, with FpsResult::origin): no propagation from
 /// scratch. Samples may lie inside faces; the ones the repair adds are vertices.
 Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<SurfacePoint> samples,

@@ -7,7 +7,7 @@
 //    tries the edge update), the straight-line distance a lower bound (an unfolded virtual source
 //    at distances >= the true ones is never closer than the true source, by Stewart's theorem);
 //  - invariants: symmetry, triangle inequality, scaling by a constant metric, the distance limit
-//    as a sub-run of the unlimited run, separate single-source runs for the multi-source labels.
+//    as a sub-run of the unlimited run, separate single-source runs for the multi-source cells.
 // Tolerances are multiples of the mean edge length h of the mesh at hand.
 #include <gtest/gtest.h>
 
@@ -374,12 +374,12 @@ TEST(FastMarchingMetric, ConstantCostScalesEveryDistance) {
     ASSERT_TRUE(metric.hasValue()) << metric.status().message;
     FastMarchingResult r = run(m, sources, *metric);
     ASSERT_EQ(r.reachedCount(), m.vertexCount());
-    int labelDiffs = 0;
+    int cellDiffs = 0;
     for (int v = 0; v < m.vertexCount(); ++v) {
       ASSERT_NEAR(r.distance[v], c * base.distance[v], 1e-9 * c * base.distance[v]) << "vertex " << v;
-      labelDiffs += r.cell[v] != base.cell[v];
+      cellDiffs += r.cell[v] != base.cell[v];
     }
-    EXPECT_EQ(labelDiffs, 0);
+    EXPECT_EQ(cellDiffs, 0);
     EXPECT_NEAR(r.maxDistance, c * base.maxDistance, 1e-9 * c * base.maxDistance);
   }
   // Speed F = 1 / c gives the same field as cost c.
@@ -493,9 +493,9 @@ TEST(FastMarchingSources, LabelsAreTheNearestSource) {
     EXPECT_EQ(multi.distance[sources[i]], 0.0);
     EXPECT_EQ(multi.cell[sources[i]], i);
   }
-  const double band = 2.0 * h;  // labels may differ where two sources are within the FM error
-  int exact = 0, labelChecked = 0, labelWrong = 0, notArgmin = 0;
-  double worstMislabelGap = 0;
+  const double band = 2.0 * h;  // cells may differ where two sources are within the FM error
+  int exact = 0, cellChecked = 0, cellWrong = 0, notArgmin = 0;
+  double worstWrongCellGap = 0;
   double worstDiff = 0;
   for (int v = 0; v < m.vertexCount(); ++v) {
     double best = kInf, second = kInf;
@@ -518,22 +518,22 @@ TEST(FastMarchingSources, LabelsAreTheNearestSource) {
     if (diff <= 1e-12 * best) ++exact;
     if (multi.cell[v] != arg) {
       ++notArgmin;
-      worstMislabelGap = std::max(worstMislabelGap, single[multi.cell[v]].distance[v] - best);
+      worstWrongCellGap = std::max(worstWrongCellGap, single[multi.cell[v]].distance[v] - best);
     }
     if (second - best > band) {
-      ++labelChecked;
-      if (multi.cell[v] != arg && ++labelWrong <= 5)
-        ADD_FAILURE() << "vertex " << v << ": label " << multi.cell[v] << ", nearest source " << arg
+      ++cellChecked;
+      if (multi.cell[v] != arg && ++cellWrong <= 5)
+        ADD_FAILURE() << "vertex " << v << ": cell " << multi.cell[v] << ", nearest source " << arg
                       << " (" << best << " vs " << second << ")";
     }
   }
   std::cout << "[ sources  ] " << k << " sources on fandisk: " << exact << " / " << m.vertexCount()
             << " vertices equal to the min of single-source runs, worst difference " << worstDiff / h << " h; "
-            << labelChecked << " labels checked outside the tie band; " << notArgmin
-            << " labels not the argmin, worst gap " << worstMislabelGap / h << " h\n";
-  EXPECT_EQ(labelWrong, 0);
+            << cellChecked << " cells checked outside the tie band; " << notArgmin
+            << " cells not the argmin, worst gap " << worstWrongCellGap / h << " h\n";
+  EXPECT_EQ(cellWrong, 0);
   EXPECT_GE(exact, 0.8 * m.vertexCount()) << "away from the region boundaries the runs must agree exactly";
-  EXPECT_GE(labelChecked, 0.8 * m.vertexCount());
+  EXPECT_GE(cellChecked, 0.8 * m.vertexCount());
 }
 
 TEST(FastMarchingSources, DuplicateSourceKeepsItsFirstLabel) {
@@ -605,7 +605,7 @@ TEST(FastMarchingComponents, ASourceReachesOnlyItsComponent) {
     EXPECT_LT(inComponent, m.vertexCount());
     EXPECT_TRUE(std::isfinite(r.maxDistance));
   }
-  // One source on each torus reaches everything, each torus labelled by its own source.
+  // One source on each torus reaches everything, each torus the cell of its own source.
   int other = 0;
   while (comp[other] == comp[0]) ++other;
   FastMarchingResult both = run(m, {0, other});

@@ -6,11 +6,11 @@ namespace gr::detail {
 
 struct Candidate {  // the best update found so far for one vertex
   double u;
-  int label;
+  int cell;
 };
 
 struct Saved {  // value of a vertex before the current run improved it tentatively
-  int v, label, run;
+  int v, cell, run;
   double u;
 };
 
@@ -47,7 +47,7 @@ struct FarSplit {
 struct Node {
   double u;   ///< U, tentative while in the heap
   int run;    ///< run in which the vertex was last accepted; 0 = not known
-  int label;
+  int cell;
 };
 
 }  // namespace gr::detail

@@ -51,9 +51,9 @@
 
 #include "bench/bench_support.h"
 #include "core/measure/evaluation.h"
-#include "core/remesh/remesh_surface.h"
 #include "core/mesh/tri_mesh.h"
 #include "core/mesh/vcg_mesh.h"
+#include "core/remesh/remesh_surface.h"
 #include "tests/oracles/remesh_oracles.h"
 
 namespace {
@@ -66,7 +66,6 @@ constexpr int kAdaptiveCalibrationRuns = 6;
 constexpr double kCountTolerance = 0.01;
 constexpr int kCgalIterations = 3;
 constexpr int kCgalCalibrationRuns = 3;
-
 
 struct Case {
   const char* mesh;   ///< name in the benchmark
@@ -161,7 +160,7 @@ gr::Expected<Run> remesh(const gr::TriMesh& mesh, const gr::Metric& metric, int 
 
 /// gr::remeshAdaptive, what the adaptive filter runs: curvature, speed, metric, then the remesh.
 gr::Expected<Run> remeshAdaptive(const gr::TriMesh& mesh, int target, gr::Metric* metricOut = nullptr,
-                                  double radiusInEdges = kRadiusInEdges) {
+                                 double radiusInEdges = kRadiusInEdges) {
   gr::AdaptiveRemeshParams params;
   params.metric.field = gr::AdaptiveField::TotalCurvature;
   params.metric.curvature.radius = radiusInEdges * mesh.meanEdgeLength();
@@ -296,7 +295,8 @@ void BM_Cgal(benchmark::State& state, const Case& c) {
   static std::map<std::string, gr::oracle::CgalCalibration> calibrated;
   gr::oracle::CgalCalibration& calibration = calibrated[c.key()];
   if (calibration.runs == 0)
-    calibration = gr::oracle::calibrateCgalEdgeLength(*input, n, kCgalIterations, kCgalCalibrationRuns, kCountTolerance);
+    calibration =
+        gr::oracle::calibrateCgalEdgeLength(*input, n, kCgalIterations, kCgalCalibrationRuns, kCountTolerance);
   const double length = calibration.edgeLength;
   const int runs = calibration.runs;
   const std::optional<gr::TriMesh> tri = gr::bench::timeCgalRemeshing(state, *input, length, kCgalIterations);
@@ -315,7 +315,9 @@ void BM_Cgal(benchmark::State& state, const Case& c) {
 std::string quadricScript(int targetFaces) {
   return "<!DOCTYPE FilterScript>\n<FilterScript>\n"
          " <filter name=\"Simplification: Quadric Edge Collapse Decimation\">\n"
-         "  <Param type=\"RichInt\" name=\"TargetFaceNum\" value=\"" + std::to_string(targetFaces) + "\"/>\n"
+         "  <Param type=\"RichInt\" name=\"TargetFaceNum\" value=\"" +
+         std::to_string(targetFaces) +
+         "\"/>\n"
          "  <Param type=\"RichFloat\" name=\"TargetPerc\" value=\"0\"/>\n"
          "  <Param type=\"RichFloat\" name=\"QualityThr\" value=\"0.3\"/>\n"
          "  <Param type=\"RichBool\" name=\"PreserveBoundary\" value=\"false\"/>\n"
@@ -344,8 +346,8 @@ void BM_MeshLabQuadric(benchmark::State& state, const Case& c) {
   const std::string dir = dirTemplate, script = dir + "/script.mlx", out = dir + "/out.off", log = dir + "/log.txt";
   const int targetFaces = 2 * *n - 4;
   std::ofstream(script) << quadricScript(targetFaces);
-  const std::string command = "xvfb-run -a meshlabserver -i '" + gr::bench::benchMeshPath(c.file) + "' -o '" + out + "' -s '" + script +
-                              "' > '" + log + "' 2>&1";
+  const std::string command = "xvfb-run -a meshlabserver -i '" + gr::bench::benchMeshPath(c.file) + "' -o '" + out +
+                              "' -s '" + script + "' > '" + log + "' 2>&1";
   for (auto _ : state) {
     std::remove(out.c_str());
     const auto t0 = std::chrono::steady_clock::now();
@@ -381,15 +383,21 @@ void registerAll() {
     const auto name = [&](const char* family) { return std::string(family) + "/" + c.key(); };
     // Uniform first: it records the vertex count the others are matched to.
     // Process CPU time: the engine's helper thread counts too.
-    for (const auto& [family, fn] : {std::pair{"Uniform", BM_Uniform}, std::pair{"Adaptive", BM_Adaptive},
-                                     std::pair{"AdaptiveDefaultRadius", BM_AdaptiveDefaultRadius},
-                                     std::pair{"Cgal", BM_Cgal}})
+    for (const auto& [family, fn] :
+         {std::pair{"Uniform", BM_Uniform}, std::pair{"Adaptive", BM_Adaptive},
+          std::pair{"AdaptiveDefaultRadius", BM_AdaptiveDefaultRadius}, std::pair{"Cgal", BM_Cgal}})
       benchmark::RegisterBenchmark(name(family).c_str(), fn, c)
-          ->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->MinTime(kMinTime)->Repetitions(kRepetitions)
+          ->Unit(benchmark::kMillisecond)
+          ->MeasureProcessCPUTime()
+          ->MinTime(kMinTime)
+          ->Repetitions(kRepetitions)
           ->DisplayAggregatesOnly(true);
     // One process per iteration (about 0.3-1 s each): wall time, 3 single runs.
     benchmark::RegisterBenchmark(name("MeshLabQECD").c_str(), BM_MeshLabQuadric, c)
-        ->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(1)->Repetitions(kRepetitions)
+        ->Unit(benchmark::kMillisecond)
+        ->UseManualTime()
+        ->Iterations(1)
+        ->Repetitions(kRepetitions)
         ->DisplayAggregatesOnly(true);
   }
 }

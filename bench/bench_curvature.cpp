@@ -39,10 +39,8 @@ namespace {
 using gr::bench::MeshSpec;
 
 const MeshSpec kMeshes[] = {
-    {"fandisk", "fandisk.off", 0},
-    {"bunny00", "bunny00.off", 0},
-    {"armadillo", "armadillo.off", 0},
-    {"fandisk_large_sub3", "fandisk_large.off", 3},
+    {"fandisk", "fandisk.off", 0},          {"bunny00", "bunny00.off", 0},
+    {"armadillo", "armadillo.off", 0},      {"fandisk_large_sub3", "fandisk_large.off", 3},
     {"armadillo_sub3", "armadillo.off", 3},
 };
 
@@ -65,8 +63,7 @@ gr::oracle::VcgCurvature& vcgCurvature(BenchMesh& bm) {
 
 void setRate(benchmark::State& state, int vertices) {
   state.counters["vertices"] = vertices;
-  state.counters["vertices/s"] =
-      benchmark::Counter(double(vertices) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["vertices/s"] = benchmark::Counter(double(vertices) * state.iterations(), benchmark::Counter::kIsRate);
 }
 
 // ------------------------------------------------------------------------------------------------

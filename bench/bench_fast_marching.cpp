@@ -52,8 +52,8 @@ using gr::bench::MeshSpec;
 using gr::oracle::DijkstraSolver;
 using gr::oracle::HeatVariant;
 
-constexpr int kSource = 0;        ///< the source vertex of every single-source benchmark
-constexpr int kFpsSources = 1000; ///< FpsStep_*: the field of kFpsSources-1 sources, plus one
+constexpr int kSource = 0;         ///< the source vertex of every single-source benchmark
+constexpr int kFpsSources = 1000;  ///< FpsStep_*: the field of kFpsSources-1 sources, plus one
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // ------------------------------------------------------------------------------------------------
@@ -77,7 +77,7 @@ struct BenchMesh {
   std::optional<gr::oracle::HeatMesh> cgal;
   std::unique_ptr<gr::oracle::HeatSolver> heatDirect;  ///< factorised solvers, kept for the *_Query benchmarks
   std::unique_ptr<gr::oracle::HeatSolver> heatIdt;
-  std::vector<int> fpsSources;             ///< kFpsSources vertices in farthest-point order
+  std::vector<int> fpsSources;  ///< kFpsSources vertices in farthest-point order
 };
 
 /// The mesh of `spec`, loaded (and subdivided) once per process; nullptr after SkipWithError.
@@ -294,9 +294,7 @@ void BM_FpsStepOursFullRecompute(benchmark::State& state, const MeshSpec& spec) 
 }
 
 using Clock = std::chrono::steady_clock;
-double seconds(Clock::time_point t0, Clock::time_point t1) {
-  return std::chrono::duration<double>(t1 - t0).count();
-}
+double seconds(Clock::time_point t0, Clock::time_point t1) { return std::chrono::duration<double>(t1 - t0).count(); }
 
 /// Ours, incremental: addSource + propagate on the engine that holds the 999-source field; the
 /// front enters only the vertices it improves. The field is restored by copying a prepared

@@ -43,19 +43,19 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
-#include <regex>
-#include <sstream>
 #include <memory>
 #include <optional>
+#include <regex>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "bench/bench_support.h"
 #include "core/measure/evaluation.h"
-#include "core/remesh/remesh_surface.h"
 #include "core/mesh/tri_mesh.h"
 #include "core/mesh/vcg_mesh.h"
+#include "core/remesh/remesh_surface.h"
 #include "tests/oracles/remesh_oracles.h"
 
 namespace {
@@ -63,8 +63,8 @@ namespace {
 using gr::bench::MeshSpec;
 using gr::oracle::SurfaceMesh;
 
-constexpr int kCgalIterations = 3;   ///< isotropic_remeshing's number_of_iterations
-constexpr int kCalibrationRuns = 3;  ///< untimed CGAL runs to match the vertex count
+constexpr int kCgalIterations = 3;        ///< isotropic_remeshing's number_of_iterations
+constexpr int kCalibrationRuns = 3;       ///< untimed CGAL runs to match the vertex count
 constexpr int kCalibrationRunsLarge = 1;  ///< the same on the 1.66M mesh (one CGAL run takes ~40 s)
 constexpr double kCalibrationTolerance = 0.01;
 
@@ -112,7 +112,7 @@ int targetCount(const Case& c, const BenchMesh& bm) {
 // Ours
 
 struct Variant {
-  bool subVertex = false;  ///< FpsParams::subVertexPlacement
+  bool subVertex = false;                                            ///< FpsParams::subVertexPlacement
   int relaxation = gr::SurfaceRemeshParams().relaxation.iterations;  ///< the filter's default
 };
 
@@ -219,9 +219,9 @@ void BM_Cgal(benchmark::State& state, const Case& c) {
   static std::map<std::string, gr::oracle::CgalCalibration> calibrated;
   gr::oracle::CgalCalibration& calibration = calibrated[c.key()];
   if (calibration.runs == 0)
-    calibration = gr::oracle::calibrateCgalEdgeLength(*input, n, kCgalIterations,
-                                                     c.mesh.subdivisions > 0 ? kCalibrationRunsLarge : kCalibrationRuns,
-                                                     kCalibrationTolerance);
+    calibration = gr::oracle::calibrateCgalEdgeLength(
+        *input, n, kCgalIterations, c.mesh.subdivisions > 0 ? kCalibrationRunsLarge : kCalibrationRuns,
+        kCalibrationTolerance);
   const double length = calibration.edgeLength;
   const int calibrationRuns = calibration.runs;
   const std::optional<gr::TriMesh> tri = gr::bench::timeCgalRemeshing(state, *input, length, kCgalIterations);
@@ -270,13 +270,15 @@ void BM_MeshLabIsotropic(benchmark::State& state, const Case& c) {
   const std::string dir = dirTemplate, script = dir + "/script.mlx", out = dir + "/out.off", log = dir + "/log.txt";
   const std::string input = gr::bench::benchMeshPath(c.mesh.file);
   const std::string startup = "xvfb-run -a meshlabserver -i '" + input + "' -o '" + out + "' > '" + log + "' 2>&1";
-  const std::string command = "xvfb-run -a meshlabserver -i '" + input + "' -o '" + out + "' -s '" + script +
-                              "' > '" + log + "' 2>&1";
+  const std::string command =
+      "xvfb-run -a meshlabserver -i '" + input + "' -o '" + out + "' -s '" + script + "' > '" + log + "' 2>&1";
   // Untimed: the edge length that gives our vertex count, as for CGAL (L from the area, then
   // L *= sqrt(n_obtained / N) until within 2%, at most 4 runs).
   double area = 0.0;
   for (const gr::Tri& t : bm->tri.triangles)
-    area += 0.5 * (bm->tri.positions[t[1]] - bm->tri.positions[t[0]]).cross(bm->tri.positions[t[2]] - bm->tri.positions[t[0]]).norm();
+    area += 0.5 * (bm->tri.positions[t[1]] - bm->tri.positions[t[0]])
+                      .cross(bm->tri.positions[t[2]] - bm->tri.positions[t[0]])
+                      .norm();
   double length = std::sqrt(2.0 * area / (std::sqrt(3.0) * n));
   int calibrationRuns = 0;
   gr::Expected<gr::TriMesh> result = gr::invalidInput("not run");
@@ -348,7 +350,10 @@ void registerAll() {
     if (c.mesh.subdivisions == 0) add("OursSubVertex", BM_OursSubVertex, c);
     if (c.mesh.subdivisions == 0)  // one meshlabserver process per run: wall time, 3 single runs
       benchmark::RegisterBenchmark(("MeshLabIsotropic/" + c.key()).c_str(), BM_MeshLabIsotropic, c)
-          ->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(1)->Repetitions(kRepetitions)
+          ->Unit(benchmark::kMillisecond)
+          ->UseManualTime()
+          ->Iterations(1)
+          ->Repetitions(kRepetitions)
           ->DisplayAggregatesOnly(true);
   }
 }

@@ -16,8 +16,8 @@
 namespace gr::filters {
 namespace {
 
-const QStringList kFieldNames = {"Vertex quality", "Total curvature", "Color gradient"};        // AdaptiveField order
-const QStringList kMappingNames = {"Direct", "Attractive", "Repulsive"};                        // SpeedMapping order
+const QStringList kFieldNames = {"Vertex quality", "Total curvature", "Color gradient"};  // AdaptiveField order
+const QStringList kMappingNames = {"Direct", "Attractive", "Repulsive"};                  // SpeedMapping order
 constexpr double kRampPercentile = 95.0;  ///< the total curvature's colour ramp ends at this percentile
 
 void declareCurvatureRadius(const MeshModel& mesh, RichParameterList& params) {
@@ -35,8 +35,9 @@ Expected<std::vector<double>> fieldValues(const CurrentMesh& current, AdaptiveFi
   const MeshModel* mm = current.model;
   if (field == AdaptiveField::VertexQuality) {
     if (!mm->hasDataMask(MeshModel::MM_VERTQUALITY))
-      return invalidInput("the mesh has no vertex quality: compute one first (e.g. Compute Total Curvature, or any "
-                          "filter of the Quality Measure and Computations menu), or choose another Field");
+      return invalidInput(
+          "the mesh has no vertex quality: compute one first (e.g. Compute Total Curvature, or any "
+          "filter of the Quality Measure and Computations menu), or choose another Field");
     return adapters::vertexQuality(mm->cm, current.view);
   }
   if (field == AdaptiveField::ColorGradient) {
@@ -54,9 +55,10 @@ std::string fieldLine(const AdaptiveMetricParams& params, const AdaptiveMetricRe
   if (params.field == AdaptiveField::TotalCurvature)
     field += " (radius " + formatNumber(metric.curvatureRadius, "%.4g") + ")";
   return "Field: " + field + " from " + formatNumber(speed.fieldMin, "%.4g") + " to " +
-         formatNumber(speed.fieldMax, "%.4g") + ", scale (" + formatNumber(params.speed.percentile, "%g") + "th percentile) " + formatNumber(speed.scale, "%.4g") +
-         "; mapping " + toString(params.speed.mapping) + ", strength " + formatNumber(params.speed.strength, "%.4g") +
-         ": speed from " + formatNumber(speed.speedMin, "%.4g") + " to " + formatNumber(speed.speedMax, "%.4g");
+         formatNumber(speed.fieldMax, "%.4g") + ", scale (" + formatNumber(params.speed.percentile, "%g") +
+         "th percentile) " + formatNumber(speed.scale, "%.4g") + "; mapping " + toString(params.speed.mapping) +
+         ", strength " + formatNumber(params.speed.strength, "%.4g") + ": speed from " +
+         formatNumber(speed.speedMin, "%.4g") + " to " + formatNumber(speed.speedMax, "%.4g");
 }
 
 }  // namespace
@@ -68,18 +70,20 @@ void declareAdaptiveRemesh(const MeshModel& mesh, RichParameterList& params) {
                            "The per-vertex field that sets the density: the vertex quality (any filter's output: "
                            "curvature, ambient occlusion, distance, a painted value), the total curvature |k1|+|k2| "
                            "(Cohen-Steiner-Morvan tensor, paper 3.4), or the gradient magnitude of the vertex "
-                           "colour's intensity (paper 3.3) (default: " + kFieldNames[int(defaults.field)] + ")."));
+                           "colour's intensity (paper 3.3) (default: " +
+                               kFieldNames[int(defaults.field)] + ")."));
   params.addParam(RichEnum(param::kMapping, int(defaults.speed.mapping), kMappingNames, "Mapping",
                            "How the field q becomes the front speed F (sample spacing follows F): Direct: F from 1/r "
                            "to 1 as q grows (sparser where q is large); Attractive: F = 1/(1 + mu q) (paper's F2, "
                            "denser where q is large: vertices gather on features); Repulsive: F = 1 + eps q "
                            "(paper's F1, sparser where q is large). q is first divided by its " +
-                               QString::number(defaults.speed.percentile) + "th percentile (default: " +
-                               kMappingNames[int(defaults.speed.mapping)] + ")."));
+                               QString::number(defaults.speed.percentile) +
+                               "th percentile (default: " + kMappingNames[int(defaults.speed.mapping)] + ")."));
   params.addParam(RichFloat(param::kStrength, float(defaults.speed.strength), "Strength",
                             "r for Direct (ratio of the largest to the smallest spacing, >= 1), mu for Attractive, eps "
                             "for Repulsive (>= 0; 0 = uniform). Dimensionless: the same value gives similar results "
-                            "on meshes of any size (default " + QString::number(defaults.speed.strength) + ")."));
+                            "on meshes of any size (default " +
+                                QString::number(defaults.speed.strength) + ")."));
   declareCurvatureRadius(mesh, params);
 }
 
@@ -129,9 +133,11 @@ Status applyTotalCurvature(MeshDocument& doc, const RichParameterList& params, F
   const auto [lo, top] = std::minmax_element(tau->tau.begin(), tau->tau.end());
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   ctx.log("Total curvature |k1|+|k2| (Cohen-Steiner-Morvan, radius " + formatNumber(tau->radius, "%.4g") + ", " +
-          formatNumber(tau->meanNeighbourhoodSize, "%.1f") + " vertices per ball on average) written to vertex quality: "
-          "from " + formatNumber(*lo, "%.4g") + " to " + formatNumber(*top, "%.4g") + ", " + formatNumber(kRampPercentile, "%g") + "th percentile " +
-          formatNumber(hi, "%.4g") + " (colour ramp from 0 to it)");
+          formatNumber(tau->meanNeighbourhoodSize, "%.1f") +
+          " vertices per ball on average) written to vertex quality: "
+          "from " +
+          formatNumber(*lo, "%.4g") + " to " + formatNumber(*top, "%.4g") + ", " + formatNumber(kRampPercentile, "%g") +
+          "th percentile " + formatNumber(hi, "%.4g") + " (colour ramp from 0 to it)");
   ctx.log("Time: " + formatDuration(ms));
   return Status::ok();
 }

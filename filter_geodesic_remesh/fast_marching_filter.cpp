@@ -13,11 +13,13 @@ namespace gr::filters {
 namespace {
 
 /// The front speed asked for by the parameters: the vertex quality, or none (F = 1).
-Expected<std::vector<double>> speedFromParameters(const MeshModel& mm, const adapters::CoreView& view, bool useQuality) {
+Expected<std::vector<double>> speedFromParameters(const MeshModel& mm, const adapters::CoreView& view,
+                                                  bool useQuality) {
   if (!useQuality) return std::vector<double>();
   if (!mm.hasDataMask(MeshModel::MM_VERTQUALITY))
-    return invalidInput("UseQualityAsSpeed is on, but the mesh has no per-vertex quality: compute one first "
-                        "(any filter of the Quality Measure and Computations menu)");
+    return invalidInput(
+        "UseQualityAsSpeed is on, but the mesh has no per-vertex quality: compute one first "
+        "(any filter of the Quality Measure and Computations menu)");
   return adapters::vertexQuality(mm.cm, view);
 }
 
@@ -32,7 +34,9 @@ void declareFastMarching(const MeshModel& mesh, RichParameterList& params) {
   params.addParam(RichAbsPerc(param::kMaxDistance, 0.0f, 0.0f, diag, "Max distance",
                               "Stop the front at this distance (mesh units, or % of the bounding-box diagonal). "
                               "Vertices farther away are not reached and get quality -1. Default 0 = no limit."));
-  params.addParam(RichEnum(param::kColorBy, int(ColorBy::Distance), QStringList() << "Distance" << "Voronoi cell",
+  params.addParam(RichEnum(param::kColorBy, int(ColorBy::Distance),
+                           QStringList() << "Distance"
+                                         << "Voronoi cell",
                            "Color by",
                            "Distance (default): a red-to-blue ramp over the distance. Voronoi cell: one color per "
                            "source, each vertex colored by its nearest source (geodesic Voronoi diagram)."));
@@ -53,8 +57,9 @@ Status applyFastMarching(MeshDocument& doc, const RichParameterList& params, Fil
                        "faces per edge. Run 'Repair non Manifold Edges by removing faces' first.");
   const std::vector<int> sources = adapters::selectedVertices(m, view);
   if (sources.empty())
-    return invalidInput("no vertex is selected: select the source vertices first (for example with "
-                        "'Conditional Vertex Selection')");
+    return invalidInput(
+        "no vertex is selected: select the source vertices first (for example with "
+        "'Conditional Vertex Selection')");
   const bool useQuality = params.getBool(param::kUseQualityAsSpeed);
   Expected<std::vector<double>> speed = speedFromParameters(*mm, view, useQuality);
   if (!speed) return speed.status();
@@ -80,8 +85,7 @@ Status applyFastMarching(MeshDocument& doc, const RichParameterList& params, Fil
     adapters::colorByLabel(m, view, result->cell, static_cast<int>(sources.size()));
   mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
 
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const int unreached = view.mesh.vertexCount() - result->reachedCount();
   ctx.log("Fast marching from " + std::to_string(sources.size()) + " selected vertices, speed " +
           (useQuality ? "= vertex quality" : "1") +
@@ -89,7 +93,8 @@ Status applyFastMarching(MeshDocument& doc, const RichParameterList& params, Fil
   ctx.log("Reached " + std::to_string(result->reachedCount()) + " of " + std::to_string(view.mesh.vertexCount()) +
           " vertices; maximum distance " + formatNumber(result->maxDistance));
   if (unreached > 0)
-    ctx.warn(std::to_string(unreached) + " vertices were not reached (other connected components, or beyond "
+    ctx.warn(std::to_string(unreached) +
+             " vertices were not reached (other connected components, or beyond "
              "MaxDistance); their quality is -1");
   if (topology.nonManifoldVertices > 0)
     ctx.warn("the mesh has " + std::to_string(topology.nonManifoldVertices) +

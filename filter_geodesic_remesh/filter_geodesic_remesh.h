@@ -20,8 +20,7 @@ class FilterGeodesicRemeshPlugin : public QObject, public MeshFilterInterface {
   int postCondition(QAction* action) const override;
   FILTER_ARITY filterArity(QAction*) const override { return SINGLE_MESH; }
   void initParameterSet(QAction* action, MeshModel& mesh, RichParameterList& params) override;
-  bool applyFilter(QAction* action, MeshDocument& doc, const RichParameterList& params,
-                   vcg::CallBackPos* cb) override;
+  bool applyFilter(QAction* action, MeshDocument& doc, const RichParameterList& params, vcg::CallBackPos* cb) override;
 
  private:
   const gr::filters::FilterSpec* spec(FilterIDType id) const;

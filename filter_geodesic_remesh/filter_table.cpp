@@ -28,7 +28,8 @@ const std::vector<FilterSpec>& filterTable() {
        "are added until the result is a manifold, consistently oriented mesh with the input's components and "
        "genus and boundary loops (boundaries are sampled first and stay boundaries). Last, a few rounds of "
        "tangential relaxation on the input surface give well-shaped triangles (creases and tips stay). The "
-       "result goes to a new layer; vertex colour and quality of the input are carried over.<br>See G. Peyr&eacute; and L. Cohen, <i>Geodesic "
+       "result goes to a new layer; vertex colour and quality of the input are carried over.<br>See G. Peyr&eacute; "
+       "and L. Cohen, <i>Geodesic "
        "Remeshing Using Front Propagation</i>, IJCV 2006, &sect;3.1&ndash;3.2.",
        MeshFilterInterface::Remeshing, kWritesQualityAndColor, declareUniformRemesh, applyUniformRemesh},
       {kAdaptiveRemesh, "Remeshing: Geodesic Adaptive",

@@ -4,8 +4,7 @@
 namespace gr::filters::param {
 
 // Geodesic Distance: Fast Marching from Selected Vertices
-constexpr const char *kUseQualityAsSpeed = "UseQualityAsSpeed", *kMaxDistance = "MaxDistance",
-                     *kColorBy = "ColorBy";
+constexpr const char *kUseQualityAsSpeed = "UseQualityAsSpeed", *kMaxDistance = "MaxDistance", *kColorBy = "ColorBy";
 
 // Both remeshing filters: the sampling
 constexpr const char *kTargetVertices = "TargetVertices", *kSpacing = "Spacing", *kSeed = "Seed",

@@ -25,9 +25,9 @@ void logOrientation(const TriMesh& input, const SurfaceRemeshResult& r, FilterCo
 void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshCommit& commit, const QString& label,
                FilterContext& ctx) {
   ctx.log(commit.title + " of " + count(input.vertexCount()) + " vertices, " + count(input.faceCount()) + " faces" +
-          (commit.refinement > 0 ? " (fronts on " + count(r.frontVertices) + " vertices, " + count(commit.refinement) +
-                                       " subdivisions)"
-                                 : std::string()) +
+          (commit.refinement > 0
+               ? " (fronts on " + count(r.frontVertices) + " vertices, " + count(commit.refinement) + " subdivisions)"
+               : std::string()) +
           ": " + count(r.mesh.vertexCount()) + " vertices, " + count(r.mesh.faceCount()) + " faces on the new layer '" +
           label.toStdString() + "'");
   ctx.log("Samples: " + count(r.sampledCount) + " by farthest-point sampling, " + count(r.addedSamples) +
@@ -84,10 +84,12 @@ void declareSampling(const MeshModel& mesh, RichParameterList& params) {
   params.addParam(RichAbsPerc(param::kSpacing, float(spacing * diag), 0.0f, diag, "Spacing",
                               "Used when Target vertices is 0: sample until every point of the surface is closer "
                               "than this geodesic distance to a sample (mesh units or % of the bounding-box "
-                              "diagonal; default " + QString::number(100 * spacing) + "%)."));
+                              "diagonal; default " +
+                                  QString::number(100 * spacing) + "%)."));
   params.addParam(RichInt(param::kSeed, int(defaults.sampling.seed), "Seed",
                           "Picks the start of the farthest-point sampling: the same seed gives the same mesh "
-                          "(default " + QString::number(defaults.sampling.seed) + ")."));
+                          "(default " +
+                              QString::number(defaults.sampling.seed) + ")."));
   params.addParam(RichBool(param::kSubVertexPlacement, defaults.sampling.subVertexPlacement, "Sub-vertex placement",
                            QString("Place each new sample where the fronts meet, inside a face, rather than at the "
                                    "farthest input vertex (paper 3.1): fewer thin triangles on smooth surfaces, but "
@@ -120,8 +122,7 @@ void commitRemesh(MeshDocument& doc, const CurrentMesh& current, const SurfaceRe
     adapters::colorByLabel(mm->cm, view, result.cell, result.mesh.vertexCount());
     mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
   }
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - commit.start).count();
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - commit.start).count();
   logOrientation(view.mesh, result, ctx);
   logCounts(view.mesh, result, commit, label, ctx);
   warnIfSoup(view.mesh, result, ctx);

@@ -10,7 +10,8 @@ void declareUniformRemesh(const MeshModel& mesh, RichParameterList& params) {
   const SurfaceRemeshParams defaults;
   params.addParam(RichInt(param::kRefinement, defaults.refinement, "Refinement",
                           "Compute the sampling and the Voronoi cells on the input subdivided this many times "
-                          "(0 to " + QString::number(SurfaceRemeshParams::kMaxRefinement) +
+                          "(0 to " +
+                              QString::number(SurfaceRemeshParams::kMaxRefinement) +
                               "; each level: 4x the vertices and about 4x the time). Finer cells give better "
                               "shaped triangles when the target is a large share of the input's vertices; samples "
                               "then also lie between input vertices (default " +
@@ -21,7 +22,8 @@ void declareUniformRemesh(const MeshModel& mesh, RichParameterList& params) {
                               "): each vertex moves toward the mean of its neighbours on the input surface (never "
                               "across a crease, never smoothing away a tip), then edges are flipped back to "
                               "Delaunay. Raises the smallest angles; 0 keeps the paper's triangulation as it is "
-                              "(default " + QString::number(defaults.relaxation.iterations) + ")."));
+                              "(default " +
+                              QString::number(defaults.relaxation.iterations) + ")."));
   params.addParam(RichBool(param::kLabelInput, false, "Label input",
                            "Also write into the input mesh each vertex's Voronoi cell (the output vertex it belongs "
                            "to) as vertex quality, and color it by cell (default false: the input is not changed)."));

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs everything the project needs on Debian 12 (bookworm). Safe to run again.
-#   1. Debian packages (MeshLab 2020.09, Qt5, GLEW, Eigen, GoogleTest, Google Benchmark, CGAL, Xvfb, matplotlib for docs/adaptive_error.png).
+#   1. Debian packages (MeshLab 2020.09, Qt5, GLEW, Eigen, GoogleTest, Google Benchmark, CGAL, Xvfb, matplotlib for docs/adaptive_error.png, clang-format-14 for the format check).
 #   2. MeshLab 2020.09's sources (plugin headers + the matching vcglib) from Debian's source package,
 #      pinned to the version of the installed binary, into $CACHE/meshlab-2020.09+dfsg1.
 #   3. The real test meshes of libcgal-demo into $CACHE/meshes.
@@ -11,7 +11,7 @@ MESHLAB_VERSION=2020.09+dfsg1-2
 CACHE=${GEODESIC_REMESH_CACHE:-$HOME/.cache/geodesic-remesh}
 PACKAGES=(meshlab qtbase5-dev libqt5opengl5-dev libglew-dev libeigen3-dev libgtest-dev
           libbenchmark-dev libcgal-dev xvfb xauth imagemagick x11-utils dpkg-dev cmake g++ make
-          python3-matplotlib)
+          python3-matplotlib clang-format-14)
 
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO=sudo

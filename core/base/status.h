@@ -36,9 +36,7 @@ struct Status {
 inline Status invalidInput(std::string msg) { return {StatusCode::InvalidInput, std::move(msg)}; }
 inline Status nonManifold(std::string msg) { return {StatusCode::NonManifold, std::move(msg)}; }
 inline Status degenerate(std::string msg) { return {StatusCode::Degenerate, std::move(msg)}; }
-inline Status cancelled(std::string msg = "cancelled by the user") {
-  return {StatusCode::Cancelled, std::move(msg)};
-}
+inline Status cancelled(std::string msg = "cancelled by the user") { return {StatusCode::Cancelled, std::move(msg)}; }
 inline Status outOfMemory(std::string msg = "out of memory") { return {StatusCode::OutOfMemory, std::move(msg)}; }
 inline Status internalError(std::string msg) { return {StatusCode::Internal, std::move(msg)}; }
 

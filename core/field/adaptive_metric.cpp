@@ -12,11 +12,11 @@ namespace {
 Expected<std::vector<double>> fieldOf(const TriMesh& mesh, const std::vector<double>& values,
                                       const AdaptiveMetricParams& params, Progress progress, double& radius) {
   switch (params.field) {
-    case AdaptiveField::VertexQuality:
-      return values;
+    case AdaptiveField::VertexQuality: return values;
     case AdaptiveField::TotalCurvature: {
       if (!mesh.topology.isManifold())
-        return nonManifold("the mesh has non-manifold edges or vertices; repair them first (Cleaning and Repairing menu)");
+        return nonManifold(
+            "the mesh has non-manifold edges or vertices; repair them first (Cleaning and Repairing menu)");
       Expected<CurvatureResult> tau = totalCurvature(mesh, params.curvature, std::move(progress));
       if (!tau) return tau.status();
       radius = tau->radius;
@@ -44,7 +44,8 @@ Expected<AdaptiveMetricResult> adaptiveMetric(const TriMesh& mesh, const std::ve
                                               const AdaptiveMetricParams& params, Progress progress) {
   const int field = static_cast<int>(params.field), mapping = static_cast<int>(params.speed.mapping);
   if (field < 0 || field >= kAdaptiveFieldCount)
-    return invalidInput("Field must be 0 to " + std::to_string(kAdaptiveFieldCount - 1) + ", got " + std::to_string(field));
+    return invalidInput("Field must be 0 to " + std::to_string(kAdaptiveFieldCount - 1) + ", got " +
+                        std::to_string(field));
   if (mapping < 0 || mapping >= kSpeedMappingCount)
     return invalidInput("Mapping must be 0 to " + std::to_string(kSpeedMappingCount - 1) + ", got " +
                         std::to_string(mapping));

@@ -33,12 +33,12 @@ struct CellPoint {
 /// numbers new vertices level by level): renumbered, a ball's vertices are near each other in
 /// memory, and every pass below reads the mesh sequentially.
 struct LocalMesh {
-  std::vector<int> original;      ///< local index -> mesh vertex
-  std::vector<int> begin, list;   ///< neighbours (local indices), CSR; each neighbour once
-  std::vector<CellPoint> point;   ///< local index -> position and ramp width
-  std::vector<CellMass> mass;     ///< local index -> tensor and area of the cell
-  std::vector<Vec3> normal;       ///< local index -> area-weighted normal (not normalised)
-  double meanEdgeLength = 0.0;    ///< as TriMesh::meanEdgeLength(), same sums in the same order
+  std::vector<int> original;     ///< local index -> mesh vertex
+  std::vector<int> begin, list;  ///< neighbours (local indices), CSR; each neighbour once
+  std::vector<CellPoint> point;  ///< local index -> position and ramp width
+  std::vector<CellMass> mass;    ///< local index -> tensor and area of the cell
+  std::vector<Vec3> normal;      ///< local index -> area-weighted normal (not normalised)
+  double meanEdgeLength = 0.0;   ///< as TriMesh::meanEdgeLength(), same sums in the same order
 };
 
 /// Local triangles: a face's vertices as local indices.
@@ -120,7 +120,7 @@ std::vector<int> addEdgesAndCountNeighbours(const TriMesh& mesh, const LocalTria
     if (o < c) continue;  // boundary (-1), non-manifold (-2), or the pair seen from the other side
     const Vec3& n1 = faceNormal[TriMesh::face(c)];
     Vec3 n2 = faceNormal[TriMesh::face(o)];
-    if (n1.squaredNorm() == 0.0 || n2.squaredNorm() == 0.0) continue;  // zero-area face: no angle
+    if (n1.squaredNorm() == 0.0 || n2.squaredNorm() == 0.0) continue;              // zero-area face: no angle
     if (mesh.vertex(TriMesh::next(o)) == mesh.vertex(TriMesh::next(c))) n2 = -n2;  // faces disagree on orientation
     const int la = localTri[TriMesh::face(c)][(c + 1) % 3], lb = localTri[TriMesh::face(c)][(c + 2) % 3];
     const Vec3 e = edgeVector(local.point, la, lb);

@@ -78,12 +78,12 @@ struct CurvatureParams {
 };
 
 struct CurvatureResult {
-  std::vector<double> tau;  ///< per vertex, total curvature |k1| + |k2| (1 / mesh units), >= 0
-  std::vector<double> k1;   ///< per vertex, principal curvature of larger magnitude (signed)
-  std::vector<double> k2;   ///< per vertex, principal curvature of smaller magnitude (signed)
-  double radius = 0.0;      ///< the radius used (mesh units); each ball is at least its vertex's 1-ring
+  std::vector<double> tau;             ///< per vertex, total curvature |k1| + |k2| (1 / mesh units), >= 0
+  std::vector<double> k1;              ///< per vertex, principal curvature of larger magnitude (signed)
+  std::vector<double> k2;              ///< per vertex, principal curvature of smaller magnitude (signed)
+  double radius = 0.0;                 ///< the radius used (mesh units); each ball is at least its vertex's 1-ring
   double meanNeighbourhoodSize = 0.0;  ///< vertices with w > 0 per ball, on average (v included)
-  int oneRingRadius = 0;    ///< vertices whose ball took their 1-ring's radius (not smaller than `radius`)
+  int oneRingRadius = 0;               ///< vertices whose ball took their 1-ring's radius (not smaller than `radius`)
 };
 
 /// Curvature of every vertex. Signs: positive where the surface is convex for its orientation

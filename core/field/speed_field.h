@@ -29,8 +29,8 @@
 #include <string>
 #include <vector>
 
-#include "core/geodesic/metric.h"
 #include "core/base/status.h"
+#include "core/geodesic/metric.h"
 #include "core/mesh/tri_mesh.h"
 
 namespace gr {

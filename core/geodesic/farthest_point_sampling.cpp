@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include "core/geodesic/fast_marching.h"
 #include "core/geodesic/detail/farthest_queue.h"
+#include "core/geodesic/fast_marching.h"
 
 namespace gr {
 namespace {
@@ -80,8 +80,8 @@ Status checkFpsParams(const TriMesh& mesh, const FpsParams& params) {
     return invalidInput("give a target sample count or a spacing (both are 0)");
   const int usable = usableVertexCount(mesh);
   if (params.targetCount > usable)
-    return invalidInput("cannot place " + std::to_string(params.targetCount) + " samples on " +
-                        std::to_string(usable) + " vertices");
+    return invalidInput("cannot place " + std::to_string(params.targetCount) + " samples on " + std::to_string(usable) +
+                        " vertices");
   if (!(params.boundaryPriority >= 1.0) || !std::isfinite(params.boundaryPriority))
     return invalidInput("the boundary priority must be finite and >= 1");
   return Status::ok();

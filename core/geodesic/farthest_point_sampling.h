@@ -19,10 +19,10 @@
 
 #include <vector>
 
-#include "core/geodesic/fast_marching.h"
-#include "core/geodesic/metric.h"
 #include "core/base/progress.h"
 #include "core/base/status.h"
+#include "core/geodesic/fast_marching.h"
+#include "core/geodesic/metric.h"
 #include "core/mesh/tri_mesh.h"
 
 namespace gr {
@@ -41,11 +41,11 @@ struct FpsParams {
 };
 
 struct FpsResult {
-  std::vector<int> samples;      ///< the farthest vertex at each step, in the order they were chosen
+  std::vector<int> samples;          ///< the farthest vertex at each step, in the order they were chosen
   std::vector<SurfacePoint> origin;  ///< where the samples lie: samples[i], or a point near it (subVertexPlacement)
-  std::vector<double> distance;  ///< per vertex, U to the nearest sample
-  std::vector<int> cell;         ///< per vertex, its geodesic Voronoi cell: an index into `samples`
-  double coveringRadius = 0.0;   ///< largest U at the end (the next sample's distance)
+  std::vector<double> distance;      ///< per vertex, U to the nearest sample
+  std::vector<int> cell;             ///< per vertex, its geodesic Voronoi cell: an index into `samples`
+  double coveringRadius = 0.0;       ///< largest U at the end (the next sample's distance)
   std::vector<double> insertionDistance;  ///< U_n at each sample when it was chosen (inf for the first of a component)
 };
 

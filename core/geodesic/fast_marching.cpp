@@ -177,7 +177,8 @@ Status FastMarcher::addSource(int v, int cell) {
     if (!(f->lva > 0.0)) continue;
     int r = -1;
     double lar = 0.0, lbr = 0.0;
-    for (const StarFace *g = star_.data() + starBegin_[f->a], *end = star_.data() + starBegin_[f->a + 1]; g != end; ++g) {
+    for (const StarFace *g = star_.data() + starBegin_[f->a], *end = star_.data() + starBegin_[f->a + 1]; g != end;
+         ++g) {
       if (g->b == f->b && g->a != sv) {  // face (a, R, b): the orientation of v's face
         r = g->a, lar = g->lva, lbr = g->lab;
         break;
@@ -275,8 +276,7 @@ void FastMarcher::relax(int x, double u, int cell) {
 
 template <bool kUniform>
 [[gnu::always_inline]] inline void FastMarcher::offerTriangle(Candidate& best, int /*x*/, int s, int t, double lxs,
-                                                              double lxt, double lst,
-                                                              [[maybe_unused]] double p) const {
+                                                              double lxt, double lst, [[maybe_unused]] double p) const {
   const double us = node_[s].u, ut = node_[t].u;
   if (std::max(us, ut) >= best.u) return;  // causal values are >= both: it cannot win
   const TriangleFrame frame = triangleFrame(lxs, lxt, lst);
@@ -303,9 +303,7 @@ void FastMarcher::scatter(int v) {
   const double uv = node[v].u;
   const int cellOfV = node[v].cell;
   // The mean P of a virtual triangle (acute splits): read from P_ (rare).
-  const auto meanP = [this](int x, int s, int t) {
-    return kUniform ? 1.0 : (P_[x] + P_[s] + P_[t]) * (1.0 / 3.0);
-  };
+  const auto meanP = [this](int x, int s, int t) { return kUniform ? 1.0 : (P_[x] + P_[s] + P_[t]) * (1.0 / 3.0); };
   // Triangles (v, a, b) around v: each offers a and b one candidate, the best of the edge
   // update, the triangle update and the virtual triangle of an acute split. A candidate starts
   // at the neighbour's current value when the edge update does not beat it: only improvements
@@ -414,8 +412,7 @@ void FastMarcher::endRun() {
   runOpen_ = false;
 }
 
-Expected<FastMarchingResult> fastMarching(const TriMesh& mesh, const Metric& metric,
-                                          const std::vector<int>& sources,
+Expected<FastMarchingResult> fastMarching(const TriMesh& mesh, const Metric& metric, const std::vector<int>& sources,
                                           const FastMarchingParams& params, Progress progress) {
   if (sources.empty()) return invalidInput("no source vertices were given");
   if (!metric.isUniform() && static_cast<int>(metric.P.size()) != mesh.vertexCount())

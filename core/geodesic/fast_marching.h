@@ -23,16 +23,16 @@
 #include <utility>
 #include <vector>
 
+#include "core/base/progress.h"
+#include "core/base/status.h"
 #include "core/geodesic/detail/acute_split.h"
 #include "core/geodesic/detail/eikonal_update.h"
 #include "core/geodesic/detail/indexed_heap.h"
 #include "core/geodesic/detail/marcher_records.h"
+#include "core/geodesic/detail/unfold.h"
 #include "core/geodesic/metric.h"
-#include "core/base/progress.h"
-#include "core/base/status.h"
 #include "core/mesh/surface_point.h"
 #include "core/mesh/tri_mesh.h"
-#include "core/geodesic/detail/unfold.h"
 
 namespace gr {
 
@@ -48,7 +48,7 @@ struct FastMarchingParams {
 
 struct FastMarchingResult {
   std::vector<double> distance;    ///< per vertex, U; kUnreached (+inf) if not reached
-  std::vector<int> cell;  ///< per vertex, index into the source list; -1 if not reached
+  std::vector<int> cell;           ///< per vertex, index into the source list; -1 if not reached
   std::vector<int> acceptedOrder;  ///< reached vertices in the order they were accepted
   double maxDistance = 0.0;        ///< largest finite U
   int reachedCount() const { return static_cast<int>(acceptedOrder.size()); }
@@ -118,32 +118,31 @@ class FastMarcher {
   /// Offers the vertices of the faces around a source the length of straight segments from the
   /// source point in the unfolding of those faces (kSeedDepth rings): exact values where a point
   /// source is too close for the triangle updates to be causal.
-  void seedByUnfolding(const Vec2& p, double pAtSource, int face, const std::array<Vec2, 3>& layout,
-                       int enteredThrough, int depth, int cell);
+  void seedByUnfolding(const Vec2& p, double pAtSource, int face, const std::array<Vec2, 3>& layout, int enteredThrough,
+                       int depth, int cell);
   void endRun();
-
 
   const TriMesh& mesh_;
   bool uniform_;
-  std::vector<double> P_;           ///< per slot; all ones for a uniform metric
+  std::vector<double> P_;  ///< per slot; all ones for a uniform metric
   // The hot loop works on slots: vertices renumbered in breadth-first order for memory
   // locality; the public arrays and the API use the mesh's vertex numbers.
-  std::vector<int> slotOf_;         ///< per vertex
-  std::vector<int> vertexOf_;       ///< per slot
-  std::vector<int> starBegin_;      ///< per slot, into star_
-  std::vector<StarFace> star_;      ///< the faces around each slot (a, b are slots)
+  std::vector<int> slotOf_;     ///< per vertex
+  std::vector<int> vertexOf_;   ///< per slot
+  std::vector<int> starBegin_;  ///< per slot, into star_
+  std::vector<StarFace> star_;  ///< the faces around each slot (a, b are slots)
   std::vector<StarCost> starCost_;
   std::vector<NearSplit> nearSplits_;  ///< per acute split
   std::vector<int> farSplitBegin_;
   std::vector<FarSplit> farSplits_;
   std::vector<Node> node_;
-  std::vector<double> U_;           ///< public copies of node_.u and node_.cell, updated at the
-  std::vector<int> cell_;           ///< end of each run for the vertices it changed
+  std::vector<double> U_;  ///< public copies of node_.u and node_.cell, updated at the
+  std::vector<int> cell_;  ///< end of each run for the vertices it changed
   int run_ = 0;
   bool runOpen_ = false;
-  std::vector<int> touched_;        ///< slots given a finite value since reset()
-  std::vector<int> accepted_;         ///< slots accepted by the current or last run
-  std::vector<int> acceptedVertices_; ///< the same as vertices, published by endRun()
+  std::vector<int> touched_;           ///< slots given a finite value since reset()
+  std::vector<int> accepted_;          ///< slots accepted by the current or last run
+  std::vector<int> acceptedVertices_;  ///< the same as vertices, published by endRun()
   std::vector<Saved> saved_;
   IndexedHeap heap_;
   std::vector<std::pair<Vec2, Vec2>> seedChain_;  ///< edges crossed by the current unfolding
@@ -152,8 +151,7 @@ class FastMarcher {
 /// One-shot multi-source fast marching. Fails on an empty or out-of-range source list, a metric
 /// whose size does not match the mesh, or a negative distance limit. On a connected mesh with no
 /// limit every vertex is reached.
-Expected<FastMarchingResult> fastMarching(const TriMesh& mesh, const Metric& metric,
-                                          const std::vector<int>& sources,
+Expected<FastMarchingResult> fastMarching(const TriMesh& mesh, const Metric& metric, const std::vector<int>& sources,
                                           const FastMarchingParams& params = {}, Progress progress = {});
 
 /// The same with a per-vertex front speed F (P = 1/F, Metric::fromSpeed); an empty `speed` is

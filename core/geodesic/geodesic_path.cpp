@@ -11,8 +11,8 @@ namespace {
 /// Where a straight walk inside a face ends.
 struct Exit {
   bool valid = false;
-  Vec3 bary;        ///< exit point in the face's barycentric coordinates
-  double u = 0.0;   ///< interpolated U there
+  Vec3 bary;       ///< exit point in the face's barycentric coordinates
+  double u = 0.0;  ///< interpolated U there
 };
 
 /// Barycentric change per unit step along -grad U in face f, or false for a degenerate face.
@@ -162,8 +162,10 @@ void Descent::stepFromFace() {
   // On the boundary of `face_` (or inside it, at the start): where does the point lie?
   int zeros = 0, nonzero = -1;
   for (int k = 0; k < 3; ++k) {
-    if (bary_[k] <= 1e-12) ++zeros;
-    else nonzero = k;
+    if (bary_[k] <= 1e-12)
+      ++zeros;
+    else
+      nonzero = k;
   }
   if (zeros == 2) {  // at a vertex
     vertex_ = mesh_.triangles[face_][nonzero];
@@ -231,8 +233,8 @@ Expected<GeodesicPath> geodesicPath(const TriMesh& mesh, const std::vector<doubl
       return Status{StatusCode::NotConverged,
                     "the distance field has a local minimum at vertex " + std::to_string(descent.vertex())};
   }
-  return Status{StatusCode::NotConverged, "the geodesic path did not reach a source in " +
-                                              std::to_string(params.maxSteps) + " steps"};
+  return Status{StatusCode::NotConverged,
+                "the geodesic path did not reach a source in " + std::to_string(params.maxSteps) + " steps"};
 }
 
 }  // namespace gr

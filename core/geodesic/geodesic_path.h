@@ -16,8 +16,8 @@
 
 #include <vector>
 
-#include "core/mesh/surface_point.h"
 #include "core/base/status.h"
+#include "core/mesh/surface_point.h"
 #include "core/mesh/tri_mesh.h"
 
 namespace gr {
@@ -27,15 +27,15 @@ struct GeodesicPathParams {
 };
 
 struct GeodesicPath {
-  std::vector<Vec3> points;     ///< from the start to the source
-  std::vector<double> values;   ///< U (interpolated) at each point; strictly decreasing
-  double length = 0.0;          ///< Euclidean length of the polyline
-  int endVertex = -1;           ///< the source vertex reached
+  std::vector<Vec3> points;    ///< from the start to the source
+  std::vector<double> values;  ///< U (interpolated) at each point; strictly decreasing
+  double length = 0.0;         ///< Euclidean length of the polyline
+  int endVertex = -1;          ///< the source vertex reached
 };
 
 /// Fails (InvalidInput) if the start is not on the mesh or not reached by the field, or (NotConverged)
 /// if maxSteps is exceeded.
-Expected<GeodesicPath> geodesicPath(const TriMesh& mesh, const std::vector<double>& distance,
-                                    const SurfacePoint& start, const GeodesicPathParams& params = {});
+Expected<GeodesicPath> geodesicPath(const TriMesh& mesh, const std::vector<double>& distance, const SurfacePoint& start,
+                                    const GeodesicPathParams& params = {});
 
 }  // namespace gr

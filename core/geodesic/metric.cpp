@@ -13,8 +13,8 @@ Status checkValues(const std::vector<double>& field, int count, const char* what
                         std::to_string(count) + " vertices");
   for (size_t v = 0; v < field.size(); ++v)
     if (!std::isfinite(field[v]) || field[v] <= 0.0)
-      return invalidInput(std::string(what) + " must be finite and > 0, but vertex " + std::to_string(v) +
-                          " has " + std::to_string(field[v]));
+      return invalidInput(std::string(what) + " must be finite and > 0, but vertex " + std::to_string(v) + " has " +
+                          std::to_string(field[v]));
   return Status::ok();
 }
 

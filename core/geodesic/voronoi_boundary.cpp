@@ -53,8 +53,7 @@ double extrapolatedArrival(const TriMesh& m, const std::vector<double>& P, const
 }  // namespace
 
 std::vector<VoronoiEdgePoint> voronoiBoundaryPoints(const TriMesh& mesh, const Metric& metric,
-                                                    const std::vector<double>& distance,
-                                                    const std::vector<int>& cell) {
+                                                    const std::vector<double>& distance, const std::vector<int>& cell) {
   const std::vector<double> P = metric.isUniform() ? std::vector<double>(mesh.vertexCount(), 1.0) : metric.P;
   std::vector<VoronoiEdgePoint> points;
   for (int c = 0; c < 3 * mesh.faceCount(); ++c) {

@@ -18,16 +18,15 @@
 namespace gr {
 
 struct VoronoiEdgePoint {
-  int v1, v2;       ///< the edge, v1 in cell cell1, v2 in cell cell2
+  int v1, v2;  ///< the edge, v1 in cell cell1, v2 in cell cell2
   int cell1, cell2;
-  double lambda;    ///< position along the edge, in [0, 1] from v1
+  double lambda;  ///< position along the edge, in [0, 1] from v1
   Vec3 position;
 };
 
 /// Boundary points of the Voronoi diagram given by a fast-marching field (distance, cell).
 /// Each boundary edge is reported once.
 std::vector<VoronoiEdgePoint> voronoiBoundaryPoints(const TriMesh& mesh, const Metric& metric,
-                                                    const std::vector<double>& distance,
-                                                    const std::vector<int>& cell);
+                                                    const std::vector<double>& distance, const std::vector<int>& cell);
 
 }  // namespace gr

@@ -48,8 +48,10 @@ AngleStatistics angleStatistics(const TriMesh& mesh) {
       const Vec3 w = mesh.positions[t[(k + 2) % 3]] - mesh.positions[t[k]];
       const double nu = u.norm(), nw = w.norm();
       double angle = 0.0;
-      if (nu > 0.0 && nw > 0.0) angle = std::acos(std::clamp(u.dot(w) / (nu * nw), -1.0, 1.0)) * 180.0 / kPi;
-      else if (nu > 0.0 || nw > 0.0) angle = 0.0;
+      if (nu > 0.0 && nw > 0.0)
+        angle = std::acos(std::clamp(u.dot(w) / (nu * nw), -1.0, 1.0)) * 180.0 / kPi;
+      else if (nu > 0.0 || nw > 0.0)
+        angle = 0.0;
       sumSq += (angle - 60.0) * (angle - 60.0);
       smallest = std::min(smallest, angle);
       a.maxDegrees = std::max(a.maxDegrees, angle);

@@ -24,10 +24,10 @@ DistanceError distanceError(const std::vector<double>& d, const std::vector<doub
 /// not reported): spread of all angles, the smallest angle, and the share of triangles whose
 /// smallest angle is under 30 degrees. Zero-area faces count with angles 0, 0, 180.
 struct AngleStatistics {
-  double stdDegrees = 0.0;          ///< standard deviation of all triangle angles
-  double minDegrees = 180.0;        ///< smallest angle of any triangle
-  double maxDegrees = 0.0;          ///< largest angle of any triangle
-  double shareMinBelow30 = 0.0;     ///< fraction of triangles with an angle under 30 degrees
+  double stdDegrees = 0.0;       ///< standard deviation of all triangle angles
+  double minDegrees = 180.0;     ///< smallest angle of any triangle
+  double maxDegrees = 0.0;       ///< largest angle of any triangle
+  double shareMinBelow30 = 0.0;  ///< fraction of triangles with an angle under 30 degrees
 };
 
 AngleStatistics angleStatistics(const TriMesh& mesh);
@@ -40,8 +40,8 @@ AngleStatistics angleStatistics(const TriMesh& mesh);
 /// (times: docs/BENCHMARKS.md). `progress` is reported from the calling thread only; if it
 /// cancels, the result is marked incomplete.
 struct SurfaceDistance {
-  double max = 0.0;  ///< one-sided Hausdorff distance
-  double rms = 0.0;  ///< root mean square over the samples
+  double max = 0.0;      ///< one-sided Hausdorff distance
+  double rms = 0.0;      ///< root mean square over the samples
   bool complete = true;  ///< false if cancelled through the progress callback
 };
 SurfaceDistance surfaceDistance(const TriMesh& from, const TriMesh& to, Progress progress = {}, int maxThreads = 0);

@@ -32,8 +32,9 @@ Expected<TriMesh> orientCoherently(const TriMesh& mesh, std::vector<char>* flipp
           flip[g] = want;
           queue.push_back(g);
         } else if (flip[g] != want) {
-          return invalidInput("the surface is not orientable (a Moebius strip or a Klein bottle): no oriented mesh of it "
-                              "exists");
+          return invalidInput(
+              "the surface is not orientable (a Moebius strip or a Klein bottle): no oriented mesh of it "
+              "exists");
         }
       }
     }

@@ -48,7 +48,8 @@ Expected<Subdivision> subdivideMidpoint(const TriMesh& mesh, int levels) {
       const int of = originalFace[TriMesh::face(c)];
       mid[c] = static_cast<int>(positions.size());
       positions.push_back(0.5 * (m.positions[a] + m.positions[b]));
-      s.origin.push_back(SurfacePoint::inFace(of, 0.5 * (baryIn(mesh, of, s.origin[a]) + baryIn(mesh, of, s.origin[b]))));
+      s.origin.push_back(
+          SurfacePoint::inFace(of, 0.5 * (baryIn(mesh, of, s.origin[a]) + baryIn(mesh, of, s.origin[b]))));
       if (m.oppositeCorner[c] >= 0) mid[m.oppositeCorner[c]] = mid[c];
     }
     std::vector<Tri> triangles;

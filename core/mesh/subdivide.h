@@ -9,8 +9,8 @@
 
 #include <vector>
 
-#include "core/mesh/surface_point.h"
 #include "core/base/status.h"
+#include "core/mesh/surface_point.h"
 #include "core/mesh/tri_mesh.h"
 
 namespace gr {

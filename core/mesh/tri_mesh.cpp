@@ -41,8 +41,7 @@ Status validate(const std::vector<Vec3>& positions, const std::vector<Tri>& tria
                         " vertices): a point cloud cannot carry geodesics");
   for (size_t v = 0; v < positions.size(); ++v)
     if (!positions[v].allFinite())
-      return invalidInput("vertex " + std::to_string(v) + " has a non-finite coordinate " +
-                          formatVec(positions[v]));
+      return invalidInput("vertex " + std::to_string(v) + " has a non-finite coordinate " + formatVec(positions[v]));
   // Distances are computed from squared differences: they must not overflow.
   Vec3 lo = positions[0], hi = positions[0];
   for (const Vec3& p : positions) {
@@ -108,9 +107,12 @@ void buildOppositeCorners(TriMesh& m, const std::vector<std::array<int, 2>>& oth
         for (int j = begin; j < end; ++j) {
           if (j == k) continue;
           int across;
-          if (others[j][0] == x) across = TriMesh::prev(m.vertexCorners[j]);
-          else if (others[j][1] == x) across = TriMesh::next(m.vertexCorners[j]);
-          else continue;
+          if (others[j][0] == x)
+            across = TriMesh::prev(m.vertexCorners[j]);
+          else if (others[j][1] == x)
+            across = TriMesh::next(m.vertexCorners[j]);
+          else
+            continue;
           found = (found == kBoundary) ? across : kNonManifold;
         }
         m.oppositeCorner[facing] = found;

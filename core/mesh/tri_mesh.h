@@ -37,16 +37,16 @@ constexpr int kNonManifold = -2;  ///< oppositeCorner value of an edge with 3+ f
 
 /// Topology of a TriMesh, counted at build time.
 struct Topology {
-  int boundaryEdges = 0;            ///< edges with exactly one face
-  int nonManifoldEdges = 0;         ///< edges with three or more faces
-  int nonManifoldVertices = 0;      ///< vertices whose faces form more than one fan
-  int isolatedVertices = 0;         ///< vertices in no face
-  int inconsistentEdges = 0;        ///< manifold edges whose two faces disagree on orientation
-  int components = 0;               ///< connected components that have faces
-  int boundaryLoops = 0;            ///< closed loops of boundary edges (manifold meshes)
-  int eulerCharacteristic = 0;      ///< V - E + F over the vertices that are in faces
-  int genus = 0;                    ///< sum over components of (2 - chi_i - b_i) / 2
-  std::vector<int> componentOfVertex;  ///< per vertex, component index; -1 for isolated vertices
+  int boundaryEdges = 0;                   ///< edges with exactly one face
+  int nonManifoldEdges = 0;                ///< edges with three or more faces
+  int nonManifoldVertices = 0;             ///< vertices whose faces form more than one fan
+  int isolatedVertices = 0;                ///< vertices in no face
+  int inconsistentEdges = 0;               ///< manifold edges whose two faces disagree on orientation
+  int components = 0;                      ///< connected components that have faces
+  int boundaryLoops = 0;                   ///< closed loops of boundary edges (manifold meshes)
+  int eulerCharacteristic = 0;             ///< V - E + F over the vertices that are in faces
+  int genus = 0;                           ///< sum over components of (2 - chi_i - b_i) / 2
+  std::vector<int> componentOfVertex;      ///< per vertex, component index; -1 for isolated vertices
   std::vector<int> nonManifoldVertexList;  ///< the non-manifold vertices, in increasing order
 
   bool isManifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
@@ -55,9 +55,9 @@ struct Topology {
 struct TriMesh {
   std::vector<Vec3> positions;
   std::vector<Tri> triangles;
-  std::vector<int> oppositeCorner;      ///< per corner (3 * face + k)
-  std::vector<int> vertexCornerBegin;   ///< size vertexCount() + 1
-  std::vector<int> vertexCorners;       ///< corners grouped by vertex
+  std::vector<int> oppositeCorner;     ///< per corner (3 * face + k)
+  std::vector<int> vertexCornerBegin;  ///< size vertexCount() + 1
+  std::vector<int> vertexCorners;      ///< corners grouped by vertex
   Topology topology;
 
   int vertexCount() const { return static_cast<int>(positions.size()); }

@@ -16,12 +16,10 @@ namespace gr {
 
 class CoreVertex;
 class CoreFace;
-struct CoreUsedTypes
-    : public vcg::UsedTypes<vcg::Use<CoreVertex>::AsVertexType, vcg::Use<CoreFace>::AsFaceType> {};
-class CoreVertex : public vcg::Vertex<CoreUsedTypes, vcg::vertex::Coord3d, vcg::vertex::Normal3d,
-                                      vcg::vertex::Qualityd, vcg::vertex::Color4b, vcg::vertex::BitFlags> {};
-class CoreFace : public vcg::Face<CoreUsedTypes, vcg::face::VertexRef, vcg::face::Normal3d,
-                                  vcg::face::BitFlags> {};
+struct CoreUsedTypes : public vcg::UsedTypes<vcg::Use<CoreVertex>::AsVertexType, vcg::Use<CoreFace>::AsFaceType> {};
+class CoreVertex : public vcg::Vertex<CoreUsedTypes, vcg::vertex::Coord3d, vcg::vertex::Normal3d, vcg::vertex::Qualityd,
+                                      vcg::vertex::Color4b, vcg::vertex::BitFlags> {};
+class CoreFace : public vcg::Face<CoreUsedTypes, vcg::face::VertexRef, vcg::face::Normal3d, vcg::face::BitFlags> {};
 class CoreMesh : public vcg::tri::TriMesh<std::vector<CoreVertex>, std::vector<CoreFace>> {};
 
 /// What a file held besides geometry (vcglib's io mask bits, decoded).

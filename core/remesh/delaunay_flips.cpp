@@ -114,7 +114,7 @@ bool shouldFlip(const TriMesh& mesh, int c, int o, double cosFeature, double tol
   const double atX = angleAt(px, pa, pb), atY = angleAt(py, pb, pa);
   const double facing = atX + atY;
   if (facing <= kPi + tolerance) return false;  // locally Delaunay
-  if (isNeighbour(mesh, c, y)) return false;  // (x, y) is already an edge
+  if (isNeighbour(mesh, c, y)) return false;    // (x, y) is already an edge
   // Feature and orientation checks: both old and new pairs nearly coplanar, same side up.
   const Vec3 n1 = unitNormal(px, pa, pb), n2 = unitNormal(py, pb, pa);
   const Vec3 m1 = unitNormal(px, pa, py), m2 = unitNormal(px, py, pb);

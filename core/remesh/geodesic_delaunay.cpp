@@ -8,9 +8,9 @@
 #include <set>
 #include <string>
 
-#include "core/remesh/delaunay_flips.h"
 #include "core/geodesic/fast_marching.h"
 #include "core/mesh/face_geometry.h"
+#include "core/remesh/delaunay_flips.h"
 
 namespace gr {
 namespace {
@@ -84,7 +84,8 @@ Status checkInput(const TriMesh& mesh, const std::vector<SurfacePoint>& samples)
   if (samples.empty()) return invalidInput("no samples were given");
   for (const SurfacePoint& s : samples) {
     if (s.vertex >= mesh.vertexCount() || (s.vertex < 0 && (s.face < 0 || s.face >= mesh.faceCount())))
-      return invalidInput("sample " + (s.vertex >= 0 ? "vertex " + std::to_string(s.vertex) : "face " + std::to_string(s.face)) +
+      return invalidInput("sample " +
+                          (s.vertex >= 0 ? "vertex " + std::to_string(s.vertex) : "face " + std::to_string(s.face)) +
                           " does not exist");
   }
   if (mesh.topology.nonManifoldEdges > 0 || mesh.topology.nonManifoldVertices > 0)
@@ -96,12 +97,12 @@ Status checkInput(const TriMesh& mesh, const std::vector<SurfacePoint>& samples)
   std::vector<double> area(mesh.topology.components, 0.0);
   for (const Tri& t : mesh.triangles) {
     const int c = mesh.topology.componentOfVertex[t[0]];
-    if (c >= 0)
-      area[c] += areaNormal(mesh, t).norm();
+    if (c >= 0) area[c] += areaNormal(mesh, t).norm();
   }
   for (size_t c = 0; c < area.size(); ++c)
     if (!(area[c] > 0.0))
-      return invalidInput("component " + std::to_string(c) + " of the mesh has zero area (all its faces are "
+      return invalidInput("component " + std::to_string(c) +
+                          " of the mesh has zero area (all its faces are "
                           "degenerate): there is no surface to remesh");
   // The dual's triangles take the orientation of the input faces they come from.
   if (mesh.topology.inconsistentEdges > 0)
@@ -117,7 +118,8 @@ Status sampleUnreachedComponents(FastMarcher& marcher, std::vector<SurfacePoint>
   const TriMesh& mesh = marcher.mesh();
   std::vector<char> reached(mesh.topology.components, 0);
   for (int v = 0; v < mesh.vertexCount(); ++v)
-    if (marcher.cell()[v] >= 0 && mesh.topology.componentOfVertex[v] >= 0) reached[mesh.topology.componentOfVertex[v]] = 1;
+    if (marcher.cell()[v] >= 0 && mesh.topology.componentOfVertex[v] >= 0)
+      reached[mesh.topology.componentOfVertex[v]] = 1;
   bool added = false;
   for (int v = 0; v < mesh.vertexCount(); ++v) {
     const int c = mesh.topology.componentOfVertex[v];
@@ -151,8 +153,7 @@ bool hasInputTopology(const TriMesh& out, const TriMesh& mesh, const std::vector
   int isolated = 0;
   for (int v = 0; v < out.vertexCount(); ++v) isolated += out.valence(v) == 0 && cellSize[v] > 0;
   return t.components == mesh.topology.components && t.genus == mesh.topology.genus &&
-         t.boundaryLoops == mesh.topology.boundaryLoops && isolated == 0 && t.inconsistentEdges == 0 &&
-         t.isManifold();
+         t.boundaryLoops == mesh.topology.boundaryLoops && isolated == 0 && t.inconsistentEdges == 0 && t.isManifold();
 }
 
 /// Cells to refine when the dual is valid locally but not of the input's topology (e.g. a handle
@@ -241,7 +242,8 @@ std::vector<int> farthestVertexPerCell(const FastMarcher& marcher, const std::ve
       farthestOnBoundary[c] = v;
   }
   for (int c = 0; c < cells; ++c)
-    if (farthestOnBoundary[c] >= 0 && marcher.distance()[farthestOnBoundary[c]] > 0.0) farthest[c] = farthestOnBoundary[c];
+    if (farthestOnBoundary[c] >= 0 && marcher.distance()[farthestOnBoundary[c]] > 0.0)
+      farthest[c] = farthestOnBoundary[c];
   return farthest;
 }
 
@@ -354,12 +356,12 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
                                                   std::to_string(round) + " rounds of sample insertion"};
     // How many rounds a mesh needs is not known ahead (1 to a few hundred): the bar moves by
     // a tenth of what is left each round.
-    if (!progress.report(1.0 - std::pow(0.9, round + 1), "Geodesic Delaunay repair"))
-      return cancelled();
+    if (!progress.report(1.0 - std::pow(0.9, round + 1), "Geodesic Delaunay repair")) return cancelled();
     const Expected<int> added = addRefinementSamples(marcher, samples, std::move(bad), onBoundary);
     if (!added) return added.status();
     if (*added == 0)
-      return Status{StatusCode::NotConverged, "the geodesic Delaunay triangulation is invalid and no cell can be refined"};
+      return Status{StatusCode::NotConverged,
+                    "the geodesic Delaunay triangulation is invalid and no cell can be refined"};
     if (Status s = marcher.propagate(); !s) return s;
   }
 }

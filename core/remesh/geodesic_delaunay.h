@@ -26,12 +26,12 @@
 
 #include <vector>
 
-#include "core/remesh/delaunay_flips.h"
-#include "core/geodesic/fast_marching.h"
-#include "core/geodesic/metric.h"
 #include "core/base/progress.h"
 #include "core/base/status.h"
+#include "core/geodesic/fast_marching.h"
+#include "core/geodesic/metric.h"
 #include "core/mesh/tri_mesh.h"
+#include "core/remesh/delaunay_flips.h"
 
 namespace gr {
 
@@ -47,13 +47,13 @@ struct DelaunayParams {
 };
 
 struct DelaunayResult {
-  TriMesh mesh;                     ///< output: one vertex per sample, at the sample's position
+  TriMesh mesh;                      ///< output: one vertex per sample, at the sample's position
   std::vector<SurfacePoint> origin;  ///< per output vertex, the point of the input it sits on
-  int addedSamples = 0;             ///< samples inserted by the repair
-  int droppedSamples = 0;           ///< samples inside faces left out: nearest to no vertex
+  int addedSamples = 0;              ///< samples inserted by the repair
+  int droppedSamples = 0;            ///< samples inside faces left out: nearest to no vertex
   int repairRounds = 0;
-  int flippedEdges = 0;             ///< edges flipped to make the result locally Delaunay
-  std::vector<int> cell;            ///< per input vertex, its Voronoi cell: an output vertex
+  int flippedEdges = 0;   ///< edges flipped to make the result locally Delaunay
+  std::vector<int> cell;  ///< per input vertex, its Voronoi cell: an output vertex
 };
 
 /// Fails with InvalidInput (no samples, a sample out of range, faces not oriented coherently: see

@@ -165,7 +165,8 @@ Expected<AdaptiveRemeshResult> remeshAdaptive(const TriMesh& input, const std::v
   Expected<AdaptiveMetricResult> metric = adaptiveMetric(input, values, params.metric, progress.sub(0.0, 0.1));
   if (!metric) return metric.status();
   r.metric = std::move(*metric);
-  Expected<SurfaceRemeshResult> remeshed = remeshSurface(input, r.metric.speed.metric, params.remesh, progress.sub(0.1, 1.0));
+  Expected<SurfaceRemeshResult> remeshed =
+      remeshSurface(input, r.metric.speed.metric, params.remesh, progress.sub(0.1, 1.0));
   if (!remeshed) return remeshed.status();
   r.remesh = std::move(*remeshed);
   return r;

@@ -32,10 +32,10 @@
 namespace gr {
 
 struct SurfaceRemeshParams {
-  static constexpr int kMaxRefinement = 3;           ///< largest `refinement`
-  static constexpr int kMaxRelaxationRounds = 100;   ///< largest relaxation.iterations
-  static constexpr double kDefaultTargetFraction = 0.1;   ///< default target: this share of the input's vertices
-  static constexpr int kMinDefaultTarget = 4;             ///< ... but at least this many
+  static constexpr int kMaxRefinement = 3;                 ///< largest `refinement`
+  static constexpr int kMaxRelaxationRounds = 100;         ///< largest relaxation.iterations
+  static constexpr double kDefaultTargetFraction = 0.1;    ///< default target: this share of the input's vertices
+  static constexpr int kMinDefaultTarget = 4;              ///< ... but at least this many
   static constexpr double kDefaultSpacingFraction = 0.02;  ///< default spacing: this share of the bbox diagonal
 
   /// The default target count for an input of `vertexCount` vertices (10%, at least 4).
@@ -59,19 +59,19 @@ struct SurfaceRemeshParams {
 /// How good the output is, measured against the input (SurfaceRemeshParams::measure).
 struct RemeshMeasures {
   AngleStatistics angles;
-  SurfaceDistance toInput;    ///< from the output's surface to the input's
-  SurfaceDistance fromInput;  ///< from the input's surface to the output's
-  double inputDiagonal = 0.0; ///< the input's bounding-box diagonal, the figures' unit in the log
+  SurfaceDistance toInput;     ///< from the output's surface to the input's
+  SurfaceDistance fromInput;   ///< from the input's surface to the output's
+  double inputDiagonal = 0.0;  ///< the input's bounding-box diagonal, the figures' unit in the log
 };
 
 /// Wall time of each stage, in seconds (the benchmarks report them; the sum is about the whole call).
 struct RemeshStageTimes {
-  double prepare = 0.0;        ///< orientation, subdivision, metric transfer
-  double engine = 0.0;         ///< the FastMarcher's construction
+  double prepare = 0.0;  ///< orientation, subdivision, metric transfer
+  double engine = 0.0;   ///< the FastMarcher's construction
   double sampling = 0.0;
   double triangulation = 0.0;  ///< geodesic Delaunay with its repair and flips
   double relaxation = 0.0;
-  double measure = 0.0;        ///< angles and surface distances (SurfaceRemeshParams::measure)
+  double measure = 0.0;  ///< angles and surface distances (SurfaceRemeshParams::measure)
 };
 
 struct SurfaceRemeshResult {
@@ -79,20 +79,20 @@ struct SurfaceRemeshResult {
   std::vector<SurfacePoint> origin;  ///< per output vertex, where it lies on the input
   /// Per input vertex, its Voronoi cell: the output vertex it belongs to.
   std::vector<int> cell;
-  int frontVertices = 0;     ///< vertices of the mesh the fronts ran on (input subdivided `refinement` times)
-  int sampledCount = 0;      ///< samples placed by farthest-point sampling
+  int frontVertices = 0;        ///< vertices of the mesh the fronts ran on (input subdivided `refinement` times)
+  int sampledCount = 0;         ///< samples placed by farthest-point sampling
   double coveringRadius = 0.0;  ///< largest distance to a sample after the sampling (a travel time with a metric)
-  int addedSamples = 0;      ///< samples the repair of the triangulation added
-  int droppedSamples = 0;    ///< samples inside faces left out (nearest to no vertex)
+  int addedSamples = 0;         ///< samples the repair of the triangulation added
+  int droppedSamples = 0;       ///< samples inside faces left out (nearest to no vertex)
   int repairRounds = 0;
-  int flippedEdges = 0;      ///< edges flipped to make the triangulation locally Delaunay
+  int flippedEdges = 0;  ///< edges flipped to make the triangulation locally Delaunay
   RelaxationResult relaxation;
-  int reorientedFaces = 0;   ///< input faces the work copy flipped to orient the surface coherently
-  int looseFaces = 0;        ///< input faces that share no edge with another face
+  int reorientedFaces = 0;  ///< input faces the work copy flipped to orient the surface coherently
+  int looseFaces = 0;       ///< input faces that share no edge with another face
   /// True when loose faces are at least a tenth of the input: a triangle soup (an STL read
   /// without merging vertices), each face its own component, which comes back unchanged.
   bool looksLikeTriangleSoup = false;
-  RemeshMeasures measures;   ///< filled when SurfaceRemeshParams::measure is set
+  RemeshMeasures measures;  ///< filled when SurfaceRemeshParams::measure is set
   RemeshStageTimes times;
 };
 

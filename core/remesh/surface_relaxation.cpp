@@ -162,7 +162,6 @@ class SurfaceWalker {
   const TriMesh& mesh_;
   double cosFeature_;
   mutable std::vector<signed char> blocked_;  ///< per input corner: -1 not computed yet, else 0 / 1
-
 };
 
 /// Cosine of the smallest angle of triangle (p, q, r): the angle facing the shortest edge.
@@ -319,8 +318,7 @@ class Relaxer {
           bestTarget = target;
         }
       }
-    if (best > smallest)
-      tryMove(v, bestTarget, hereFace, smallest, smallest, std::numeric_limits<double>::infinity());
+    if (best > smallest) tryMove(v, bestTarget, hereFace, smallest, smallest, std::numeric_limits<double>::infinity());
   }
 
   TriMesh& output_;

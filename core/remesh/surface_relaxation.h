@@ -26,10 +26,10 @@
 
 #include <vector>
 
-#include "core/remesh/delaunay_flips.h"
-#include "core/mesh/surface_point.h"
 #include "core/base/status.h"
+#include "core/mesh/surface_point.h"
 #include "core/mesh/tri_mesh.h"
+#include "core/remesh/delaunay_flips.h"
 
 namespace gr {
 
@@ -47,10 +47,10 @@ struct RelaxationParams {
 };
 
 struct RelaxationResult {
-  int iterations = 0;      ///< rounds done
-  int moves = 0;           ///< vertex moves kept, over all rounds
-  int fixedVertices = 0;   ///< vertices that never move (boundary, input creases and corners)
-  int flips = 0;           ///< edges flipped over all rounds
+  int iterations = 0;     ///< rounds done
+  int moves = 0;          ///< vertex moves kept, over all rounds
+  int fixedVertices = 0;  ///< vertices that never move (boundary, input creases and corners)
+  int flips = 0;          ///< edges flipped over all rounds
 };
 
 /// Relaxes `output` in place on the surface of `input`. `points[i]` is where output vertex i lies

@@ -93,8 +93,10 @@ TEST(Curvature, SphereHasTotalCurvatureTwoOverR) {
       SCOPED_TRACE("level " + std::to_string(level) + ", radius " + std::to_string(radiusInEdges) + " h");
       const CurvatureResult c = curvatureOf(m, radiusInEdges * h);
       const double err = maxRelativeError(c.tau, 2.0 / R, allVertices(m));
-      std::printf("sphere R=%.1f, %d vertices, r = %.3g h = %.3f R: max |tau - 2/R| / (2/R) = %.4f, "
-                  "ball %.1f vertices\n", R, m.vertexCount(), radiusInEdges, radiusInEdges * h / R, err, c.meanNeighbourhoodSize);
+      std::printf(
+          "sphere R=%.1f, %d vertices, r = %.3g h = %.3f R: max |tau - 2/R| / (2/R) = %.4f, "
+          "ball %.1f vertices\n",
+          R, m.vertexCount(), radiusInEdges, radiusInEdges * h / R, err, c.meanNeighbourhoodSize);
       EXPECT_LT(err, 0.05);
       // Both principal curvatures are +1/R (outward-facing triangles: convex is positive).
       EXPECT_LT(maxRelativeError(c.k1, 1.0 / R, allVertices(m)), 0.05);
@@ -243,10 +245,13 @@ TEST(Curvature, FandiskTopFivePercentLieOnSharpEdges) {
       onSharp += sharp.count(order[i]) ? 1 : 0;
       farthest = std::max(farthest, toSharp[order[i]]);
     }
-    std::printf("  r = %s: %d of the top %d on sharp edges (%.1f%%), the others at most %.2f h from one; "
-                "tau threshold %.3g (1/h = %.3g)\n",
-                radiusInEdges == 0.0 ? "default (h)" : radiusInEdges == kOneRing ? "1-ring" : "2 h", onSharp, top,
-                100.0 * onSharp / top, farthest / h, c.tau[order[top - 1]], 1.0 / h);
+    std::printf(
+        "  r = %s: %d of the top %d on sharp edges (%.1f%%), the others at most %.2f h from one; "
+        "tau threshold %.3g (1/h = %.3g)\n",
+        radiusInEdges == 0.0        ? "default (h)"
+        : radiusInEdges == kOneRing ? "1-ring"
+                                    : "2 h",
+        onSharp, top, 100.0 * onSharp / top, farthest / h, c.tau[order[top - 1]], 1.0 / h);
     if (radiusInEdges == 0.0) {
       EXPECT_DOUBLE_EQ(c.radius, h);
       EXPECT_EQ(onSharp, top) << "the default radius puts every top-5% vertex on a sharp edge";
@@ -353,9 +358,9 @@ TEST(Curvature, ScalesAsOneOverLengthAndIgnoresRigidMotion) {
   const double scale = *std::max_element(base.tau.begin(), base.tau.end());
   for (int v = 0; v < m.vertexCount(); ++v) {
     worstMoved = std::max(worstMoved, std::abs(moved.tau[v] * s - base.tau[v]) / scale);
-    worstFlipped = std::max({worstFlipped, std::abs(flipped.tau[v] - base.tau[v]) / scale,
-                             std::abs(flipped.k1[v] + base.k1[v]) / scale,
-                             std::abs(flipped.k2[v] + base.k2[v]) / scale});
+    worstFlipped =
+        std::max({worstFlipped, std::abs(flipped.tau[v] - base.tau[v]) / scale,
+                  std::abs(flipped.k1[v] + base.k1[v]) / scale, std::abs(flipped.k2[v] + base.k2[v]) / scale});
   }
   // Closed-form eigenvalues: relative error about 1e-8 where two coincide (header).
   EXPECT_LT(worstMoved, 1e-7);
@@ -392,14 +397,14 @@ TEST(Curvature, AcceptsOddMeshesAndKeepsTheirEffectLocal) {
   const double h = clean.meanEdgeLength();
   std::vector<Vec3> pos = clean.positions;
   std::vector<Tri> tris = clean.triangles;
-  std::swap(tris[0][1], tris[0][2]);                          // turned over
+  std::swap(tris[0][1], tris[0][2]);  // turned over
   const Tri& t5 = clean.triangles[5];
-  pos.push_back(1.2 * pos[t5[0]]);                            // a fin on edge t5[0]-t5[1]
+  pos.push_back(1.2 * pos[t5[0]]);  // a fin on edge t5[0]-t5[1]
   tris.push_back({t5[1], t5[0], static_cast<int>(pos.size()) - 1});
   const Tri& t9 = clean.triangles[9];
-  pos.push_back(0.5 * (pos[t9[0]] + pos[t9[1]]));             // zero-area face on edge t9[0]-t9[1]
+  pos.push_back(0.5 * (pos[t9[0]] + pos[t9[1]]));  // zero-area face on edge t9[0]-t9[1]
   tris.push_back({t9[0], t9[1], static_cast<int>(pos.size()) - 1});
-  pos.push_back(Vec3(9, 9, 9));                               // isolated
+  pos.push_back(Vec3(9, 9, 9));  // isolated
   const TriMesh m = std::move(buildTriMesh(pos, tris)).value();
   ASSERT_GT(m.topology.inconsistentEdges, 0);
   ASSERT_GT(m.topology.nonManifoldEdges, 0);
@@ -434,8 +439,7 @@ TEST(Curvature, RejectsBadInput) {
   const Expected<CurvatureResult> empty = totalCurvature(TriMesh{});
   ASSERT_FALSE(empty);
   EXPECT_EQ(empty.status().code, StatusCode::InvalidInput);
-  const Expected<CurvatureResult> stopped =
-      totalCurvature(m, {}, Progress([](int, const char*) { return false; }));
+  const Expected<CurvatureResult> stopped = totalCurvature(m, {}, Progress([](int, const char*) { return false; }));
   ASSERT_FALSE(stopped);
   EXPECT_EQ(stopped.status().code, StatusCode::Cancelled);
 }

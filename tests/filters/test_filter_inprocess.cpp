@@ -11,8 +11,8 @@
 #include <cstring>
 #include <limits>
 #include <new>
-#include <stdexcept>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -23,11 +23,11 @@
 #include "core/geodesic/fast_marching.h"
 #include "core/mesh/vcg_mesh.h"
 #include "core/remesh/remesh_surface.h"
-#include "vcg_adapters/cmesho_adapter.h"
 #include "filter_geodesic_remesh/filter_geodesic_remesh.h"
 #include "filter_geodesic_remesh/filter_support.h"
 #include "filter_geodesic_remesh/parameter_names.h"
 #include "tests/support/test_support.h"
+#include "vcg_adapters/cmesho_adapter.h"
 
 namespace gr {
 namespace {
@@ -168,8 +168,7 @@ TEST_F(FilterInProcess, QualityAsSpeedHalvesDistancesForSpeedTwo) {
   params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
   ASSERT_TRUE(apply()) << logText();
   const auto unit = fastMarching(grid, Metric::uniform(), {0});
-  for (int v = 0; v < grid.vertexCount(); ++v)
-    EXPECT_NEAR(mm->cm.vert[v].Q(), 0.5 * unit->distance[v], 1e-5) << v;
+  for (int v = 0; v < grid.vertexCount(); ++v) EXPECT_NEAR(mm->cm.vert[v].Q(), 0.5 * unit->distance[v], 1e-5) << v;
 }
 
 TEST_F(FilterInProcess, MaxDistanceLeavesFarVerticesAtMinusOne) {
@@ -219,7 +218,8 @@ TEST_F(FilterInProcess, NanCoordinate) {
 }
 
 TEST_F(FilterInProcess, NonManifoldEdge) {
-  MeshModel* mm = addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  MeshModel* mm =
+      addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
   mm->cm.vert[0].SetS();
   declare(*mm);
   expectCleanFailure(*mm, StatusCode::NonManifold, "1 non-manifold edges");
@@ -719,8 +719,9 @@ TEST_F(FilterInProcess, EveryFilterIgnoresDeletedElements) {
     if (v.IsD()) v.P()[0] = std::numeric_limits<float>::quiet_NaN();  // never to be read
   std::vector<Tri> liveTriangles;
   for (const auto& f : h.face)
-    if (!f.IsD()) liveTriangles.push_back({compactIndex[f.cV(0) - &h.vert[0]], compactIndex[f.cV(1) - &h.vert[0]],
-                                           compactIndex[f.cV(2) - &h.vert[0]]});
+    if (!f.IsD())
+      liveTriangles.push_back(
+          {compactIndex[f.cV(0) - &h.vert[0]], compactIndex[f.cV(1) - &h.vert[0]], compactIndex[f.cV(2) - &h.vert[0]]});
   MeshModel* compact = addMesh(doc, livePositions, liveTriangles);
   const std::vector<int> liveSlots = [&] {
     std::vector<int> live;  // (not "slots": a Qt macro)
@@ -731,8 +732,9 @@ TEST_F(FilterInProcess, EveryFilterIgnoresDeletedElements) {
   h.vert[liveSlots[0]].SetS();
   compact->cm.vert[0].SetS();
 
-  for (const char* filter : {"Geodesic Distance: Fast Marching from Selected Vertices", "Remeshing: Geodesic Uniform",
-                             "Remeshing: Geodesic Adaptive", "Compute Total Curvature (Normal Cycle) into Vertex Quality"}) {
+  for (const char* filter :
+       {"Geodesic Distance: Fast Marching from Selected Vertices", "Remeshing: Geodesic Uniform",
+        "Remeshing: Geodesic Adaptive", "Compute Total Curvature (Normal Cycle) into Vertex Quality"}) {
     SCOPED_TRACE(filter);
     use(filter);
     MeshModel* out[2] = {nullptr, nullptr};
@@ -740,7 +742,8 @@ TEST_F(FilterInProcess, EveryFilterIgnoresDeletedElements) {
     for (int i = 0; i < 2; ++i) {
       doc.setCurrent(in[i]);
       declare(*in[i]);
-      if (std::string(filter) == "Remeshing: Geodesic Uniform") params.setValue(filters::param::kTargetVertices, IntValue(300));
+      if (std::string(filter) == "Remeshing: Geodesic Uniform")
+        params.setValue(filters::param::kTargetVertices, IntValue(300));
       ASSERT_TRUE(apply()) << logText();
       out[i] = doc.mm();
     }
@@ -787,8 +790,9 @@ TEST_P(FilterDataSetSweep, EveryFilterSucceedsOrFailsCleanly) {
   const test::Recount in = test::recount(input->triangles, input->vertexCount());
   MeshModel* mm = addMesh(doc, input->positions, input->triangles);
   mm->cm.vert[0].SetS();
-  for (const char* filter : {"Geodesic Distance: Fast Marching from Selected Vertices", "Remeshing: Geodesic Uniform",
-                             "Remeshing: Geodesic Adaptive", "Compute Total Curvature (Normal Cycle) into Vertex Quality"}) {
+  for (const char* filter :
+       {"Geodesic Distance: Fast Marching from Selected Vertices", "Remeshing: Geodesic Uniform",
+        "Remeshing: Geodesic Adaptive", "Compute Total Curvature (Normal Cycle) into Vertex Quality"}) {
     SCOPED_TRACE(filter);
     use(filter);
     doc.setCurrent(mm);

@@ -13,8 +13,8 @@
 #include <string>
 #include <tuple>
 
-#include "core/measure/evaluation.h"
 #include "core/geodesic/fast_marching.h"
+#include "core/measure/evaluation.h"
 #include "core/mesh/vcg_convert.h"
 #include "core/mesh/vcg_mesh.h"
 #include "tests/support/test_support.h"
@@ -34,7 +34,8 @@ struct ServerRun {
 
 /// Runs the staged meshlabserver under Xvfb with the given arguments.
 ServerRun meshlabserver(const std::string& args) {
-  const std::string cmd = "cd '" + kOut + "' && xvfb-run -a stdbuf -oL '" + kStage + "/bin/meshlabserver' " + args + " 2>&1";
+  const std::string cmd =
+      "cd '" + kOut + "' && xvfb-run -a stdbuf -oL '" + kStage + "/bin/meshlabserver' " + args + " 2>&1";
   ServerRun run;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return run;
@@ -61,15 +62,16 @@ TEST(Meshlabserver, ListsTheFilter) {
   const std::string list = fileContents(kOut + "filters.txt");
   EXPECT_NE(list.find(kFilterName), std::string::npos) << "the filter is not in meshlabserver's list";
   EXPECT_NE(run.output.find(kStage + "/lib/x86_64-linux-gnu/meshlab/plugins"), std::string::npos)
-      << "meshlabserver did not load plugins from the staged prefix:\n" << run.output;
+      << "meshlabserver did not load plugins from the staged prefix:\n"
+      << run.output;
 }
 
 TEST(Meshlabserver, FandiskDistanceFromVertex0MatchesCoreAndSimpleTruths) {
   const std::string in = test::meshPath("fandisk.off");
   const std::string out = kOut + "fandisk_fm.ply";
   std::remove(out.c_str());
-  const ServerRun run = meshlabserver("-i '" + in + "' -o '" + out + "' -m vq vc sa -s '" + kResources +
-                                "fast_marching_vertex0.mlx'");
+  const ServerRun run =
+      meshlabserver("-i '" + in + "' -o '" + out + "' -m vq vc sa -s '" + kResources + "fast_marching_vertex0.mlx'");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("Reached 6475 of 6475 vertices"), std::string::npos) << run.output;
 
@@ -122,7 +124,7 @@ TEST(Meshlabserver, VoronoiColorsOneRegionPerSelectedVertex) {
   const std::string out = kOut + "fandisk_voronoi.ply";
   std::remove(out.c_str());
   const ServerRun run = meshlabserver("-i '" + test::meshPath("fandisk.off") + "' -o '" + out + "' -m vq vc sa -s '" +
-                                kResources + "fast_marching_voronoi.mlx'");
+                                      kResources + "fast_marching_voronoi.mlx'");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   CoreMesh result;
   ASSERT_TRUE(loadMesh(out, result).isOk());
@@ -176,8 +178,8 @@ TEST(Meshlabserver, RefinedUniformRemeshOfFandiskHasWellShapedTriangles) {
 TEST(Meshlabserver, UniformRemeshKeepsTheBoundaryLoopsOfTheShark) {
   const std::string out = kOut + "shark_uniform.ply";
   std::remove(out.c_str());
-  const ServerRun run = meshlabserver("-i '" + test::meshPath("mech-holes-shark.off") + "' -o '" + out + "' -m sa -s '" +
-                                      kResources + "uniform_remesh_10pct.mlx'");
+  const ServerRun run = meshlabserver("-i '" + test::meshPath("mech-holes-shark.off") + "' -o '" + out +
+                                      "' -m sa -s '" + kResources + "uniform_remesh_10pct.mlx'");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const auto result = loadTriMesh(out);
   ASSERT_TRUE(result) << result.status().message;
@@ -219,10 +221,11 @@ TEST_P(UniformAcceptance, TopologyKeptThroughMeshlabserver) {
   ASSERT_GE(added, 0) << run.output;
   EXPECT_EQ(result->vertexCount(), target + added) << run.output;
   const AngleStatistics q = angleStatistics(*result);
-  std::printf("%s %d%%: %d vertices (%d added), genus %d, %d loops, %d components; angle std %.1f, min %.1f, "
-              "%.2f %% under 30 deg\n",
-              name.c_str(), pct, result->vertexCount(), added, b.genus, b.boundaryLoops, b.components, q.stdDegrees,
-              q.minDegrees, 100 * q.shareMinBelow30);
+  std::printf(
+      "%s %d%%: %d vertices (%d added), genus %d, %d loops, %d components; angle std %.1f, min %.1f, "
+      "%.2f %% under 30 deg\n",
+      name.c_str(), pct, result->vertexCount(), added, b.genus, b.boundaryLoops, b.components, q.stdDegrees,
+      q.minDegrees, 100 * q.shareMinBelow30);
   if (name == "fandisk" || name == "bunny00" || name == "armadillo") {  // the quality bounds
     EXPECT_GE(q.minDegrees, 20.0);
     EXPECT_LE(q.shareMinBelow30, 0.01);
@@ -292,11 +295,13 @@ void expectCleanFailure(const BadInputCase& c) {
   const std::string before = fileContents(in);
   const std::string out = kOut + c.name + "_out.ply";
   std::remove(out.c_str());
-  const ServerRun run = meshlabserver("-i '" + in + "' -o '" + out + "' -m vq vc sa -s '" + kResources + c.script + "'");
+  const ServerRun run =
+      meshlabserver("-i '" + in + "' -o '" + out + "' -m vq vc sa -s '" + kResources + c.script + "'");
   // 255 is meshlabserver's "Failed to apply script file"; an abort or a crash gives 128 + signal.
   EXPECT_EQ(run.exitCode, 255) << run.output;
   EXPECT_NE(run.output.find(c.expectedMessage), std::string::npos)
-      << "expected '" << c.expectedMessage << "' in the log:\n" << run.output;
+      << "expected '" << c.expectedMessage << "' in the log:\n"
+      << run.output;
   EXPECT_NE(run.output.find(std::string(kFilterName) + " failed"), std::string::npos) << run.output;
   EXPECT_FALSE(fileExists(out)) << "a failed run wrote an output mesh";
   EXPECT_EQ(fileContents(in), before) << "the input file changed";

@@ -9,8 +9,8 @@
 #include <random>
 #include <set>
 
-#include "core/geodesic/farthest_point_sampling.h"
 #include "core/geodesic/detail/farthest_queue.h"
+#include "core/geodesic/farthest_point_sampling.h"
 #include "core/geodesic/fast_marching.h"
 #include "tests/support/test_support.h"
 

@@ -92,7 +92,7 @@ bool names(const std::string& msg, const std::string& word, long n) {
 struct ErrorStats {
   double meanRelative = 0;  ///< over vertices with exact >= 5% of the largest exact distance
   double maxAbsolute = 0;
-  double minRatio = kInf;   ///< min fast-marching / exact over the same vertices
+  double minRatio = kInf;  ///< min fast-marching / exact over the same vertices
 };
 
 ErrorStats compare(const std::vector<double>& got, const std::vector<double>& exact) {
@@ -201,7 +201,8 @@ TEST(FastMarchingAccuracy, SphereMatchesGreatCircleDistance) {
     std::cout << "[ sphere   ] level " << level << ", V " << m.vertexCount() << ", h " << std::setprecision(4) << h
               << ": mean relative error " << e.meanRelative << ", max abs error " << e.maxAbsolute << " ("
               << e.maxAbsolute / h << " h), min fm/exact " << e.minRatio << "\n";
-    ::testing::Test::RecordProperty("sphere_level" + std::to_string(level) + "_mean_rel", std::to_string(e.meanRelative));
+    ::testing::Test::RecordProperty("sphere_level" + std::to_string(level) + "_mean_rel",
+                                    std::to_string(e.meanRelative));
     EXPECT_LE(e.maxAbsolute, 2.0 * h);
     // The icosphere is inscribed in the sphere: its distances are shorter, by O(h).
     if (level == 5) {
@@ -281,12 +282,14 @@ TEST(FastMarchingBounds, WeightedMetricBelowWeightedDijkstra) {
 
 TEST(FastMarchingInvariants, MonotoneAlongAcceptedOrder) {
   std::vector<std::pair<std::string, TriMesh>> meshes;
-  for (unsigned seed : {1u, 2u, 3u}) meshes.push_back({"jittered grid seed " + std::to_string(seed), test::planeGrid(40, 1.0, 0.3, seed)});
+  for (unsigned seed : {1u, 2u, 3u})
+    meshes.push_back({"jittered grid seed " + std::to_string(seed), test::planeGrid(40, 1.0, 0.3, seed)});
   meshes.push_back({"fandisk", test::loadRealMesh("fandisk.off")});
   for (const auto& [name, m] : meshes) {
     SCOPED_TRACE(name);
     ASSERT_GT(m.vertexCount(), 0);
-    for (const std::vector<int>& sources : {std::vector<int>{7}, std::vector<int>{0, m.vertexCount() / 3, m.vertexCount() - 1}}) {
+    for (const std::vector<int>& sources :
+         {std::vector<int>{7}, std::vector<int>{0, m.vertexCount() / 3, m.vertexCount() - 1}}) {
       FastMarchingResult r = run(m, sources);
       ASSERT_EQ(r.reachedCount(), m.vertexCount());
       for (size_t i = 1; i < r.acceptedOrder.size(); ++i)
@@ -523,8 +526,8 @@ TEST(FastMarchingSources, LabelsAreTheNearestSource) {
     if (second - best > band) {
       ++cellChecked;
       if (multi.cell[v] != arg && ++cellWrong <= 5)
-        ADD_FAILURE() << "vertex " << v << ": cell " << multi.cell[v] << ", nearest source " << arg
-                      << " (" << best << " vs " << second << ")";
+        ADD_FAILURE() << "vertex " << v << ": cell " << multi.cell[v] << ", nearest source " << arg << " (" << best
+                      << " vs " << second << ")";
     }
   }
   std::cout << "[ sources  ] " << k << " sources on fandisk: " << exact << " / " << m.vertexCount()
@@ -699,8 +702,8 @@ TEST(FastMarcherEngine, ProgressCanCancel) {
   EXPECT_EQ(calls, 1);
 
   std::vector<int> percents;
-  Expected<FastMarchingResult> ok =
-      fastMarching(m, Metric::uniform(), {0}, {}, Progress([&](int p, const char*) { return percents.push_back(p), true; }));
+  Expected<FastMarchingResult> ok = fastMarching(
+      m, Metric::uniform(), {0}, {}, Progress([&](int p, const char*) { return percents.push_back(p), true; }));
   ASSERT_TRUE(ok.hasValue());
   EXPECT_FALSE(percents.empty());
   EXPECT_TRUE(std::is_sorted(percents.begin(), percents.end()));

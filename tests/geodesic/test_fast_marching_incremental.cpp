@@ -59,17 +59,19 @@ TEST_P(Incremental, EqualsMultiSourceRunAndVisitsOnlyImprovedVertices) {
       EXPECT_EQ(marcher.cell()[v], oneShot->cell[v]) << "vertex " << v;
     }
   }
-  std::printf("%s: 59 incremental steps visited %ld vertices (%.2f x V); %d of %d differ from the one-shot run "
-              "(largest %.3g, h = %.3g)\n",
-              GetParam().c_str(), visited, double(visited) / m.vertexCount(), differ, m.vertexCount(), worst,
-              m.meanEdgeLength());
+  std::printf(
+      "%s: 59 incremental steps visited %ld vertices (%.2f x V); %d of %d differ from the one-shot run "
+      "(largest %.3g, h = %.3g)\n",
+      GetParam().c_str(), visited, double(visited) / m.vertexCount(), differ, m.vertexCount(), worst,
+      m.meanEdgeLength());
   EXPECT_EQ(differ, 0) << "the incremental field differs from the multi-source run";
   EXPECT_LT(visited, 59L * m.vertexCount() / 4) << "incremental steps visit far more than the improved region";
 }
 
-INSTANTIATE_TEST_SUITE_P(Meshes, Incremental, ::testing::Values("fandisk.off", "bunny00.off"), [](const ::testing::TestParamInfo<std::string>& p) {
-  return p.param.substr(0, p.param.find('.'));
-});
+INSTANTIATE_TEST_SUITE_P(Meshes, Incremental, ::testing::Values("fandisk.off", "bunny00.off"),
+                         [](const ::testing::TestParamInfo<std::string>& p) {
+                           return p.param.substr(0, p.param.find('.'));
+                         });
 
 TEST(FastMarchingTargets, StopsOnceTargetsAreAcceptedWithTheirFinalValues) {
   const TriMesh m = test::loadRealMesh("fandisk.off");

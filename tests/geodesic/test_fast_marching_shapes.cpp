@@ -132,13 +132,13 @@ TEST(FastMarchingShapes, TwoSpeedPlaneRefractsByFermatsPrinciple) {
   }
 }
 
-
 /// Largest angle of any face, in degrees.
 double largestAngleDegrees(const TriMesh& m) {
   double largest = 0.0;
   for (const Tri& t : m.triangles)
     for (int k = 0; k < 3; ++k) {
-      const Vec3 u = m.positions[t[(k + 1) % 3]] - m.positions[t[k]], w = m.positions[t[(k + 2) % 3]] - m.positions[t[k]];
+      const Vec3 u = m.positions[t[(k + 1) % 3]] - m.positions[t[k]],
+                 w = m.positions[t[(k + 2) % 3]] - m.positions[t[k]];
       largest = std::max(largest, std::acos(std::clamp(u.dot(w) / (u.norm() * w.norm()), -1.0, 1.0)) * 180.0 / kPi);
     }
   return largest;
@@ -164,7 +164,9 @@ TEST(FastMarchingShapes, StronglyJitteredGrids) {
         for (size_t i = 1; i < r->acceptedOrder.size(); ++i)
           ASSERT_GE(r->distance[r->acceptedOrder[i]], r->distance[r->acceptedOrder[i - 1]]);
         const Vec3 s = m.positions[source];
-        sum += compare(m, r->distance, [&](int v) { return (m.positions[v] - s).norm(); }, 0.05).meanRelative;
+        sum += compare(
+                   m, r->distance, [&](int v) { return (m.positions[v] - s).norm(); }, 0.05)
+                   .meanRelative;
       }
       errors.push_back(sum / 3.0);
       std::printf("jitter %.2f, n %3d: largest angle %.1f deg, mean relative error over 3 seeds %.5f %%\n", jitter, n,

@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <string>
 
-#include "core/measure/evaluation.h"
 #include "core/geodesic/fast_marching.h"
+#include "core/measure/evaluation.h"
 #include "tests/oracles/geodesic_oracles.h"
 #include "tests/support/test_support.h"
 
@@ -94,9 +94,11 @@ TEST(BadTriangles, NeedlesAndZeroAreaFacesStayWithinTwiceTheGoodError) {
     expectFiniteMonotoneComplete(bad, *r);
     const std::vector<double> atOriginal(r->distance.begin(), r->distance.begin() + good.vertexCount());
     const DistanceError eBad = distanceError(atOriginal, exact);
-    std::printf("%-14s good: mean %.4f %% max %.4f %% | %d needles/zero-area faces, smallest angle %.4f deg: mean %.4f %% max %.4f %%\n",
-                name, 100 * eGood.meanRelative, 100 * eGood.maxRelativeToMax, 2 * zeroArea, smallestAngleDegrees(bad),
-                100 * eBad.meanRelative, 100 * eBad.maxRelativeToMax);
+    std::printf(
+        "%-14s good: mean %.4f %% max %.4f %% | %d needles/zero-area faces, smallest angle %.4f deg: mean %.4f %% max "
+        "%.4f %%\n",
+        name, 100 * eGood.meanRelative, 100 * eGood.maxRelativeToMax, 2 * zeroArea, smallestAngleDegrees(bad),
+        100 * eBad.meanRelative, 100 * eBad.maxRelativeToMax);
     EXPECT_LE(eBad.meanRelative, 2.0 * eGood.meanRelative);
   }
 }
@@ -111,7 +113,8 @@ TEST(BadTriangles, DataSetSliverMeshes) {
   double goodSum = 0.0;
   for (const char* name : {"fandisk.off", "bunny00.off", "armadillo.off"}) {
     const TriMesh m = test::loadRealMesh(name);
-    goodSum += distanceError(fastMarching(m, Metric::uniform(), {0})->distance, oracle::exactGeodesic(m, 0)).meanRelative;
+    goodSum +=
+        distanceError(fastMarching(m, Metric::uniform(), {0})->distance, oracle::exactGeodesic(m, 0)).meanRelative;
   }
   const double good = goodSum / 3.0;
   for (const char* name : {"blade.off", "mannequin-devil.off", "turbine.off", "cheese.off"}) {
@@ -124,10 +127,11 @@ TEST(BadTriangles, DataSetSliverMeshes) {
     const DistanceError e = distanceError(r->distance, exact);
     const DistanceError eDijkstra = distanceError(oracle::dijkstra(m, 0), exact);
     const DistanceError eVcg = distanceError(oracle::vcgGeodesic(m, 0), exact);
-    std::printf("%-20s smallest angle %.3f deg: fast marching %.4f %%, vcglib %.4f %%, Dijkstra %.4f %% "
-                "(2x the good meshes: %.4f %%)\n",
-                name, smallestAngleDegrees(m), 100 * e.meanRelative, 100 * eVcg.meanRelative,
-                100 * eDijkstra.meanRelative, 200 * good);
+    std::printf(
+        "%-20s smallest angle %.3f deg: fast marching %.4f %%, vcglib %.4f %%, Dijkstra %.4f %% "
+        "(2x the good meshes: %.4f %%)\n",
+        name, smallestAngleDegrees(m), 100 * e.meanRelative, 100 * eVcg.meanRelative, 100 * eDijkstra.meanRelative,
+        200 * good);
     EXPECT_LE(e.meanRelative, eDijkstra.meanRelative / 3);
     if (std::string(name) != "cheese.off") {
       EXPECT_LE(e.meanRelative, 2.0 * good);

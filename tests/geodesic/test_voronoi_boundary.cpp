@@ -3,9 +3,9 @@
 // on their perpendicular bisector. Compared with the naive edge midpoints.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <algorithm>
 #include <set>
 
 #include "core/geodesic/fast_marching.h"
@@ -62,9 +62,10 @@ TEST(VoronoiBoundary, AntipodalSourcesOnASphereMeetOnTheEquator) {
     expectWellFormed(m, *r, points);
     const double h = m.meanEdgeLength();
     const Offsets o = offsetsFromPlane(m, points, north.normalized(), 0.0);
-    std::printf("icosphere level %d: %zu boundary points, offset from the equator mean %.4f h, max %.4f h "
-                "(edge midpoints: mean %.4f h)\n",
-                level, points.size(), o.mean / h, o.max / h, o.meanMidpoint / h);
+    std::printf(
+        "icosphere level %d: %zu boundary points, offset from the equator mean %.4f h, max %.4f h "
+        "(edge midpoints: mean %.4f h)\n",
+        level, points.size(), o.mean / h, o.max / h, o.meanMidpoint / h);
     EXPECT_LT(o.mean, 0.05 * h);
     EXPECT_LT(o.max, 0.25 * h);
     EXPECT_LT(o.mean, 0.25 * o.meanMidpoint) << "no better than edge midpoints";

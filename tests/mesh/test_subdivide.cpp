@@ -42,8 +42,8 @@ TEST(Subdivide, KeepsTopologyAndKnowsWhereEachVertexLies) {
 
 TEST(Subdivide, RefusesNonManifoldEdgesWithNonManifold) {
   // Edge 0-1 shared by three triangles (a book with three pages).
-  const auto m = buildTriMesh({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}},
-                              {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  const auto m =
+      buildTriMesh({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
   ASSERT_TRUE(m) << m.status().message;
   ASSERT_EQ(m->topology.nonManifoldEdges, 1);
   for (int levels : {0, 1}) EXPECT_EQ(subdivideMidpoint(*m, levels).status().code, StatusCode::NonManifold);

@@ -344,8 +344,7 @@ TEST(TriMeshFixtures, TwoDisjointTetrahedraAreTwoComponents) {
 
 TEST(TriMeshFixtures, ThreeTrianglesOnOneEdgeMakeANonManifoldEdge) {
   // Edge 0-1 shared by three triangles (a "book" with three pages).
-  TriMesh m = build({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}},
-                    {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  TriMesh m = build({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
   EXPECT_EQ(m.topology.nonManifoldEdges, 1);
   EXPECT_EQ(m.topology.boundaryEdges, 6);
   EXPECT_FALSE(m.topology.isManifold());
@@ -517,8 +516,8 @@ TEST_P(RealMesh, AdjacencyAndTopologyMatchAnIndependentRecount) {
   ASSERT_TRUE(r.simpleBoundary) << name << ": boundary is not a union of simple loops";
   expectTopologyMatches(m.topology, r);
   std::cout << "[ mesh     ] " << name << ": V " << m.vertexCount() << ", F " << m.faceCount() << ", components "
-            << r.components << ", chi " << r.eulerCharacteristic << ", boundary loops " << r.boundaryLoops
-            << ", genus " << r.genusSum << "\n";
+            << r.components << ", chi " << r.eulerCharacteristic << ", boundary loops " << r.boundaryLoops << ", genus "
+            << r.genusSum << "\n";
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, RealMesh,
@@ -559,9 +558,8 @@ TEST(RealMeshTopology, Knot2IsTwoTori) {
         verts.insert(v);
         EXPECT_EQ(m.topology.componentOfVertex[v], c);
       }
-    EXPECT_EQ(static_cast<long>(verts.size()) - 3 * static_cast<long>(faces.size()) / 2 +
-                  static_cast<long>(faces.size()),
-              0)
+    EXPECT_EQ(
+        static_cast<long>(verts.size()) - 3 * static_cast<long>(faces.size()) / 2 + static_cast<long>(faces.size()), 0)
         << "component " << c;
   }
 }
@@ -667,7 +665,8 @@ TEST(OrientCoherently, RestoresTheFlippedFacesOfEachComponent) {
   std::vector<Tri> original = a.triangles;
   for (const Vec3& p : b.positions) pos.push_back(p + Vec3(3.0, 0.0, 0.0));
   // The second sphere inside out: its majority orientation is the reversed one, and stays.
-  for (const Tri& t : b.triangles) original.push_back({t[0] + a.vertexCount(), t[2] + a.vertexCount(), t[1] + a.vertexCount()});
+  for (const Tri& t : b.triangles)
+    original.push_back({t[0] + a.vertexCount(), t[2] + a.vertexCount(), t[1] + a.vertexCount()});
   std::vector<Tri> shuffled = original;
   std::vector<char> expected(shuffled.size(), 0);
   for (size_t f = 0; f < shuffled.size(); f += 3) {
@@ -692,8 +691,8 @@ TEST(OrientCoherently, RestoresTheFlippedFacesOfEachComponent) {
 
 TEST(OrientCoherently, RefusesNonManifoldEdgesWithNonManifold) {
   // Edge 0-1 shared by three triangles.
-  const TriMesh m = build({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}},
-                          {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  const TriMesh m =
+      build({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
   ASSERT_EQ(m.topology.nonManifoldEdges, 1);
   const Expected<TriMesh> o = orientCoherently(m);
   ASSERT_FALSE(o);

@@ -2,7 +2,9 @@
 
 #include <cmath>
 
+// vcglib's algorithm headers need complex.h first: a block of its own keeps it there.
 #include <vcg/complex/complex.h>
+
 #include <vcg/complex/algorithms/update/curvature.h>
 #include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/complex/algorithms/update/topology.h>

@@ -36,15 +36,15 @@ class GVertex;
 template <class Scalar>
 class GFace;
 template <class Scalar>
-struct GTypes : vcg::UsedTypes<vcg::Use<GVertex<Scalar>>::template AsVertexType,
-                               vcg::Use<GFace<Scalar>>::template AsFaceType> {};
+struct GTypes
+    : vcg::UsedTypes<vcg::Use<GVertex<Scalar>>::template AsVertexType, vcg::Use<GFace<Scalar>>::template AsFaceType> {};
 template <class Scalar>
 class GVertex
     : public vcg::Vertex<GTypes<Scalar>, ScalarComponents<Scalar>::template Coord, vcg::vertex::VFAdj,
                          ScalarComponents<Scalar>::template Quality, vcg::vertex::Mark, vcg::vertex::BitFlags> {};
 template <class Scalar>
-class GFace : public vcg::Face<GTypes<Scalar>, vcg::face::VertexRef, vcg::face::VFAdj, vcg::face::Mark,
-                               vcg::face::BitFlags> {};
+class GFace
+    : public vcg::Face<GTypes<Scalar>, vcg::face::VertexRef, vcg::face::VFAdj, vcg::face::Mark, vcg::face::BitFlags> {};
 template <class Scalar>
 class GMesh : public vcg::tri::TriMesh<std::vector<GVertex<Scalar>>, std::vector<GFace<Scalar>>> {};
 
@@ -186,7 +186,7 @@ void VcgGeodesic<Scalar>::setSources(const std::vector<int>& sources) {
 template <class Scalar>
 void VcgGeodesic<Scalar>::compute() {
   vcg::tri::Geodesic<typename Impl::Mesh>::Compute(impl_->m, impl_->seeds, impl_->metric,
-                                                    std::numeric_limits<Scalar>::max());
+                                                   std::numeric_limits<Scalar>::max());
 }
 
 template <class Scalar>

@@ -14,8 +14,8 @@ void copyToVcg(const TriMesh& t, VcgMesh& m) {
   using Scalar = typename VcgMesh::ScalarType;
   vcg::tri::Allocator<VcgMesh>::AddVertices(m, t.vertexCount());
   for (int v = 0; v < t.vertexCount(); ++v)
-    m.vert[v].P() = vcg::Point3<Scalar>(Scalar(t.positions[v].x()), Scalar(t.positions[v].y()),
-                                        Scalar(t.positions[v].z()));
+    m.vert[v].P() =
+        vcg::Point3<Scalar>(Scalar(t.positions[v].x()), Scalar(t.positions[v].y()), Scalar(t.positions[v].z()));
   vcg::tri::Allocator<VcgMesh>::AddFaces(m, t.faceCount());
   for (int f = 0; f < t.faceCount(); ++f)
     for (int k = 0; k < 3; ++k) m.face[f].V(k) = &m.vert[t.triangles[f][k]];

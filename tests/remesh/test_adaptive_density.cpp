@@ -28,16 +28,16 @@
 #include <utility>
 #include <vector>
 
+#include "core/field/speed_field.h"
 #include "core/geodesic/farthest_point_sampling.h"
 #include "core/remesh/geodesic_delaunay.h"
-#include "core/field/speed_field.h"
 #include "tests/support/test_support.h"
 
 namespace gr {
 namespace {
 
-constexpr int kGrid = 400;          // planeGrid(400): 160801 vertices on the unit square
-constexpr double kMargin = 0.1;     // samples closer than this to the border are not counted
+constexpr int kGrid = 400;       // planeGrid(400): 160801 vertices on the unit square
+constexpr double kMargin = 0.1;  // samples closer than this to the border are not counted
 
 /// One run: a grid (jitter 0 = regular, else interior vertices moved by up to jitter * h) and a count.
 struct Case {
@@ -124,9 +124,10 @@ TEST(AdaptiveDensity, TwoSpeedZonesDensityRatioIsSpeedRatioSquared) {
     const int fast = countIn(m, samples, kMargin, 0.5 - kInterfaceGap);
     const int slow = countIn(m, samples, 0.5 + kInterfaceGap, 1.0 - kMargin);
     const double ratio = (slow / slowArea) / (fast / fastArea);
-    std::printf("jitter %.1f, %d samples (%.2f s): fast zone %d, slow zone %d, density ratio %.3f (expected %.1f, "
-                "error %+.1f%%)\n",
-                run.jitter, run.count, seconds, fast, slow, ratio, expectedRatio, 100 * (ratio / expectedRatio - 1));
+    std::printf(
+        "jitter %.1f, %d samples (%.2f s): fast zone %d, slow zone %d, density ratio %.3f (expected %.1f, "
+        "error %+.1f%%)\n",
+        run.jitter, run.count, seconds, fast, slow, ratio, expectedRatio, 100 * (ratio / expectedRatio - 1));
     EXPECT_NEAR(ratio / expectedRatio, 1.0, 0.15) << "jitter " << run.jitter << ", " << run.count << " samples";
     expectValidDelaunay(m, speed->metric, samples);
   }
@@ -162,8 +163,7 @@ TEST(AdaptiveDensity, SpeedRampDensityFollowsOneOverSpeedSquaredInFiveBands) {
     constexpr int kBands = 5;
     const double width = (1.0 - 2 * kMargin) / kBands;
     std::vector<int> counted(kBands);
-    for (int b = 0; b < kBands; ++b)
-      counted[b] = countIn(m, samples, kMargin + b * width, kMargin + (b + 1) * width);
+    for (int b = 0; b < kBands; ++b) counted[b] = countIn(m, samples, kMargin + b * width, kMargin + (b + 1) * width);
     const int total = std::accumulate(counted.begin(), counted.end(), 0);
     const double perUnit = total / integral(kMargin, 1.0 - kMargin);
     std::printf("jitter %.1f, %d samples (%.2f s), %d counted:", run.jitter, run.count, seconds, total);

@@ -6,13 +6,13 @@
 
 #include <Eigen/Geometry>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "core/base/math.h"
-#include "core/remesh/delaunay_flips.h"
 #include "core/measure/evaluation.h"
+#include "core/remesh/delaunay_flips.h"
 #include "tests/support/test_support.h"
 
 namespace gr {
@@ -59,8 +59,10 @@ int emptyCircleViolations(const TriMesh& m, double relTol) {
   for (const Tri& t : m.triangles) {
     const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
     const double d = 2.0 * (a.x() * (b.y() - c.y()) + b.x() * (c.y() - a.y()) + c.x() * (a.y() - b.y()));
-    const double ux = (a.squaredNorm() * (b.y() - c.y()) + b.squaredNorm() * (c.y() - a.y()) + c.squaredNorm() * (a.y() - b.y())) / d;
-    const double uy = (a.squaredNorm() * (c.x() - b.x()) + b.squaredNorm() * (a.x() - c.x()) + c.squaredNorm() * (b.x() - a.x())) / d;
+    const double ux =
+        (a.squaredNorm() * (b.y() - c.y()) + b.squaredNorm() * (c.y() - a.y()) + c.squaredNorm() * (a.y() - b.y())) / d;
+    const double uy =
+        (a.squaredNorm() * (c.x() - b.x()) + b.squaredNorm() * (a.x() - c.x()) + c.squaredNorm() * (b.x() - a.x())) / d;
     const Vec3 center(ux, uy, 0.0);
     const double r = (a - center).norm();
     for (int v = 0; v < m.vertexCount(); ++v)
@@ -131,9 +133,9 @@ TEST(DelaunayFlips, MinimumAngleDoesNotDecrease) {
 TriMesh foldedStrip(int n, double w) {
   std::vector<Vec3> p;
   std::vector<Tri> t;
-  for (int i = 0; i <= n; ++i) p.emplace_back(0.0, double(i) / n, 0.0);                    // c_i = i
-  for (int i = 0; i < n; ++i) p.emplace_back(-w, (i + 0.5) / n, 0.0);                     // l_i
-  for (int i = 0; i < n; ++i) p.emplace_back(0.0, (i + 0.5) / n, w);                      // r_i
+  for (int i = 0; i <= n; ++i) p.emplace_back(0.0, double(i) / n, 0.0);  // c_i = i
+  for (int i = 0; i < n; ++i) p.emplace_back(-w, (i + 0.5) / n, 0.0);    // l_i
+  for (int i = 0; i < n; ++i) p.emplace_back(0.0, (i + 0.5) / n, w);     // r_i
   const auto c = [](int i) { return i; };
   const auto l = [&](int i) { return n + 1 + i; };
   const auto r = [&](int i) { return 2 * n + 1 + i; };
@@ -177,7 +179,8 @@ double largestAngleDegrees(const TriMesh& m) {
   double largest = 0.0;
   for (const Tri& t : m.triangles)
     for (int k = 0; k < 3; ++k) {
-      const Vec3 u = m.positions[t[(k + 1) % 3]] - m.positions[t[k]], w = m.positions[t[(k + 2) % 3]] - m.positions[t[k]];
+      const Vec3 u = m.positions[t[(k + 1) % 3]] - m.positions[t[k]],
+                 w = m.positions[t[(k + 2) % 3]] - m.positions[t[k]];
       largest = std::max(largest, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / kPi);
     }
   return largest;

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/measure/evaluation.h"
 #include "core/geodesic/farthest_point_sampling.h"
+#include "core/measure/evaluation.h"
 #include "core/remesh/geodesic_delaunay.h"
 #include "tests/support/test_support.h"
 
@@ -40,14 +40,16 @@ TEST_P(DelaunayOnClosedMeshes, ManifoldOrientedSameTopology) {
   const auto r = sampleAndTriangulate(m, fps);
   ASSERT_TRUE(r) << r.status().message;
   const Recount out = recount(r->mesh.triangles, r->mesh.vertexCount());
-  std::printf("%-14s %2.0f%%: %d samples + %d added in %d rounds -> %d vertices, %d faces; components %d/%d, genus %d/%d\n",
-              name.c_str(), 100 * fraction, fps.targetCount, r->addedSamples, r->repairRounds, r->mesh.vertexCount(),
-              r->mesh.faceCount(), out.components, input.components, out.genusSum, input.genusSum);
+  std::printf(
+      "%-14s %2.0f%%: %d samples + %d added in %d rounds -> %d vertices, %d faces; components %d/%d, genus %d/%d\n",
+      name.c_str(), 100 * fraction, fps.targetCount, r->addedSamples, r->repairRounds, r->mesh.vertexCount(),
+      r->mesh.faceCount(), out.components, input.components, out.genusSum, input.genusSum);
   const AngleStatistics in = angleStatistics(m), q = angleStatistics(r->mesh);
-  std::printf("%-14s %2.0f%%: angles std %.1f deg (input %.1f), min %.1f deg (input %.1f), min angle < 30 deg: %.2f %% of "
-              "triangles (input %.2f %%)\n",
-              name.c_str(), 100 * fraction, q.stdDegrees, in.stdDegrees, q.minDegrees, in.minDegrees,
-              100 * q.shareMinBelow30, 100 * in.shareMinBelow30);
+  std::printf(
+      "%-14s %2.0f%%: angles std %.1f deg (input %.1f), min %.1f deg (input %.1f), min angle < 30 deg: %.2f %% of "
+      "triangles (input %.2f %%)\n",
+      name.c_str(), 100 * fraction, q.stdDegrees, in.stdDegrees, q.minDegrees, in.minDegrees, 100 * q.shareMinBelow30,
+      100 * in.shareMinBelow30);
   EXPECT_EQ(r->mesh.vertexCount(), fps.targetCount + r->addedSamples - r->droppedSamples);
   EXPECT_TRUE(out.closedManifoldEdges);
   EXPECT_TRUE(out.oriented);
@@ -58,8 +60,8 @@ TEST_P(DelaunayOnClosedMeshes, ManifoldOrientedSameTopology) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, DelaunayOnClosedMeshes,
-                         ::testing::Combine(::testing::Values("fandisk.off", "bunny00.off", "armadillo.off", "knot2.off",
-                                                              "elephant.off"),
+                         ::testing::Combine(::testing::Values("fandisk.off", "bunny00.off", "armadillo.off",
+                                                              "knot2.off", "elephant.off"),
                                             ::testing::Values(0.1, 0.3), ::testing::Bool()),
                          [](const ::testing::TestParamInfo<std::tuple<std::string, double, bool>>& p) {
                            const std::string n = std::get<0>(p.param);
@@ -111,7 +113,8 @@ TEST(Delaunay, TwoComponentsAtTenAndThirtyPercent) {
   std::vector<Vec3> pos = a.positions;
   std::vector<Tri> tris = a.triangles;
   for (const Vec3& p : b.positions) pos.push_back(p + Vec3(3.0, 0.0, 0.0));
-  for (const Tri& t : b.triangles) tris.push_back({t[0] + a.vertexCount(), t[1] + a.vertexCount(), t[2] + a.vertexCount()});
+  for (const Tri& t : b.triangles)
+    tris.push_back({t[0] + a.vertexCount(), t[1] + a.vertexCount(), t[2] + a.vertexCount()});
   const TriMesh m = std::move(buildTriMesh(pos, tris)).value();
   for (double fraction : {0.1, 0.3}) {
     FpsParams fps;

@@ -44,10 +44,11 @@ TEST_P(RemeshQuality, WellShapedTrianglesAtDefaultSettings) {
     ASSERT_LT((r.origin[v].position(input) - r.mesh.positions[v]).norm(), 1e-9 * input.boundingBoxDiagonal());
   const test::AngleRecount angles = test::recountAngles(r.mesh);
   const double smallest = angles.smallestDegrees, share = angles.shareBelow30;
-  std::printf("%s %.0f%%: %d vertices (%d added), %d relaxation moves, smallest angle %.1f deg, %.2f %% of "
-              "triangles under 30 deg\n",
-              name.c_str(), 100 * fraction, r.mesh.vertexCount(), r.addedSamples, remeshed->relaxation.moves,
-              smallest, 100 * share);
+  std::printf(
+      "%s %.0f%%: %d vertices (%d added), %d relaxation moves, smallest angle %.1f deg, %.2f %% of "
+      "triangles under 30 deg\n",
+      name.c_str(), 100 * fraction, r.mesh.vertexCount(), r.addedSamples, remeshed->relaxation.moves, smallest,
+      100 * share);
   EXPECT_LE(share, 0.01);
   EXPECT_GE(smallest, 20.0);
 }

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "core/base/math.h"
-#include "core/measure/evaluation.h"
 #include "core/geodesic/farthest_point_sampling.h"
+#include "core/measure/evaluation.h"
 #include "core/remesh/geodesic_delaunay.h"
 #include "core/remesh/surface_relaxation.h"
 #include "tests/support/test_support.h"
@@ -114,7 +114,9 @@ TEST(SurfaceRelaxation, CreaseAndCornerVerticesDoNotMove) {
       const int e = TriMesh::prev(*c), o = input.oppositeCorner[e];
       const auto normal = [&](int f) {
         const Tri& t = input.triangles[f];
-        return Vec3((input.positions[t[1]] - input.positions[t[0]]).cross(input.positions[t[2]] - input.positions[t[0]]).normalized());
+        return Vec3((input.positions[t[1]] - input.positions[t[0]])
+                        .cross(input.positions[t[2]] - input.positions[t[0]])
+                        .normalized());
       };
       sharp |= o < 0 || normal(*c / 3).dot(normal(o / 3)) < std::cos(60.0 * kPi / 180.0);
     }

@@ -45,13 +45,13 @@ struct Recount {
   bool oriented = true;             ///< every directed edge once
   bool manifoldVertices = true;     ///< every vertex's link is one cycle or one path
   int components = 0;
-  int genusSum = 0;                 ///< sum over components of (2 - chi - loops) / 2
-  int isolated = 0;                 ///< vertices in no face
-  int boundaryEdges = 0;            ///< edges in one face
-  int nonManifoldEdges = 0;         ///< edges in three or more faces
-  int inconsistentEdges = 0;        ///< edges in two faces that run the same way in both
-  int nonManifoldVertices = 0;      ///< vertices in a face whose link is not one cycle or one path
-  int eulerCharacteristic = 0;      ///< V - E + F over the vertices in faces (every edge counted once)
+  int genusSum = 0;                    ///< sum over components of (2 - chi - loops) / 2
+  int isolated = 0;                    ///< vertices in no face
+  int boundaryEdges = 0;               ///< edges in one face
+  int nonManifoldEdges = 0;            ///< edges in three or more faces
+  int inconsistentEdges = 0;           ///< edges in two faces that run the same way in both
+  int nonManifoldVertices = 0;         ///< vertices in a face whose link is not one cycle or one path
+  int eulerCharacteristic = 0;         ///< V - E + F over the vertices in faces (every edge counted once)
   std::vector<int> componentOfVertex;  ///< per vertex, a component label of this count; -1 if isolated
 };
 Recount recount(const std::vector<Tri>& tris, int vertexCount);

@@ -35,8 +35,8 @@ bool findSplit(const TriMesh& m, int c, int maxUnfoldings, AcuteSplit& out) {
     if (d < 0) return false;  // boundary or non-manifold edge
     const int r = m.vertex(d);
     if (r == x || r == a || r == b) return false;
-    const Vec2 pr = unfold(p, q, third, (m.positions[r] - m.positions[pVert]).norm(),
-                           (m.positions[r] - m.positions[qVert]).norm());
+    const Vec2 pr =
+        unfold(p, q, third, (m.positions[r] - m.positions[pVert]).norm(), (m.positions[r] - m.positions[qVert]).norm());
     const double phi = std::atan2(pr.y(), pr.x());
     if (phi > theta - halfPi && phi < halfPi && phi > 0.0 && phi < theta) {
       out = {c, r, pr.norm(), (pr - pa).norm(), (pr - pb).norm(), la, lb};

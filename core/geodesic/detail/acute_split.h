@@ -34,11 +34,11 @@ struct AcuteSplit {
 };
 
 struct AcuteSplits {
-  std::vector<int> splitOfCorner;     ///< per corner: index into `splits`, or -1
+  std::vector<int> splitOfCorner;  ///< per corner: index into `splits`, or -1
   std::vector<AcuteSplit> splits;
-  std::vector<int> byVertexBegin;     ///< CSR: the splits whose R is a given vertex
+  std::vector<int> byVertexBegin;  ///< CSR: the splits whose R is a given vertex
   std::vector<int> byVertex;
-  int obtuseCorners = 0;              ///< corners with an angle above 90 degrees
+  int obtuseCorners = 0;  ///< corners with an angle above 90 degrees
 };
 
 AcuteSplits findAcuteSplits(const TriMesh& mesh, int maxUnfoldings = 12);

@@ -45,8 +45,8 @@ struct FarSplit {
 
 /// Per-vertex state the hot loop reads together (one cache line for a neighbour).
 struct Node {
-  double u;   ///< U, tentative while in the heap
-  int run;    ///< run in which the vertex was last accepted; 0 = not known
+  double u;  ///< U, tentative while in the heap
+  int run;   ///< run in which the vertex was last accepted; 0 = not known
   int cell;
 };
 

@@ -26,14 +26,15 @@
 #include "core/field/adaptive_metric.h"
 #include "core/measure/evaluation.h"
 #include "core/remesh/remesh_surface.h"
+#include "tests/oracles/remesh_oracles.h"
 #include "tests/support/test_support.h"
 
 namespace gr {
 namespace {
 
-constexpr double kStrength = 16.0;         // mu of the Attractive mapping
-constexpr double kRadiusInEdges = 2.0;     // curvature ball radius, in mean edge lengths
-constexpr double kCountTolerance = 0.01;   // adaptive final count within 1% below the uniform's
+constexpr double kStrength = 16.0;        // mu of the Attractive mapping
+constexpr double kRadiusInEdges = 2.0;    // curvature ball radius, in mean edge lengths
+constexpr double kCountTolerance = 0.01;  // adaptive final count within 1% below the uniform's
 constexpr int kCalibrationRuns = 6;
 
 /// The metric of a mesh: Attractive total curvature with the parameters above (adaptive_metric.h).
@@ -90,10 +91,9 @@ struct Error {
   double rmsPct = 0.0;        ///< sqrt of the mean of both directions' squared RMS, same unit
 };
 Error errorOf(const TriMesh& out, const TriMesh& in) {
-  const SurfaceDistance there = surfaceDistance(out, in), back = surfaceDistance(in, out);
+  const oracle::TwoSidedDistance d = oracle::twoSidedDistance(out, in);
   const double diag = in.boundingBoxDiagonal();
-  return {100.0 * std::max(there.max, back.max) / diag,
-          100.0 * std::sqrt(0.5 * (there.rms * there.rms + back.rms * back.rms)) / diag};
+  return {100.0 * d.max / diag, 100.0 * d.rms / diag};
 }
 
 /// Each real mesh and its adaptive metric, built once per test binary.
@@ -131,11 +131,12 @@ TEST_P(AdaptiveError, LowerThanUniformAtTheSameVertexCount) {
   ASSERT_GT(adaptive.target, 0) << "no adaptive run ended at or below " << n << " vertices";
   const int na = adaptive.result.mesh.vertexCount();
   const Error eu = errorOf(uniform->mesh, in.mesh), ea = errorOf(adaptive.result.mesh, in.mesh);
-  std::printf("%-12s %2.0f%%: uniform %5d vertices (target %d, +%d), adaptive %5d (target %d, +%d, %d runs); "
-              "Hausdorff %.3f -> %.3f %% (%+.0f%%), RMS %.4f -> %.4f %% (%+.0f%%)\n",
-              name.c_str(), 100 * fraction, n, target, uniform->addedSamples, na, adaptive.target,
-              adaptive.result.addedSamples, adaptive.runs, eu.hausdorffPct, ea.hausdorffPct,
-              100 * (ea.hausdorffPct / eu.hausdorffPct - 1), eu.rmsPct, ea.rmsPct, 100 * (ea.rmsPct / eu.rmsPct - 1));
+  std::printf(
+      "%-12s %2.0f%%: uniform %5d vertices (target %d, +%d), adaptive %5d (target %d, +%d, %d runs); "
+      "Hausdorff %.3f -> %.3f %% (%+.0f%%), RMS %.4f -> %.4f %% (%+.0f%%)\n",
+      name.c_str(), 100 * fraction, n, target, uniform->addedSamples, na, adaptive.target, adaptive.result.addedSamples,
+      adaptive.runs, eu.hausdorffPct, ea.hausdorffPct, 100 * (ea.hausdorffPct / eu.hausdorffPct - 1), eu.rmsPct,
+      ea.rmsPct, 100 * (ea.rmsPct / eu.rmsPct - 1));
   EXPECT_LE(na, n);
   EXPECT_GE(na, (1.0 - kCountTolerance) * n);
   if (reduction > 0) {
@@ -154,16 +155,14 @@ std::string caseName(const std::string& file, double fraction) {
   return n + "_" + std::to_string(static_cast<int>(std::lround(100 * fraction))) + "pct";
 }
 
-INSTANTIATE_TEST_SUITE_P(Fig14, AdaptiveError,
-                         ::testing::Values(std::make_tuple("fandisk.off", 0.02, 0.25),
-                                           std::make_tuple("fandisk.off", 0.05, 0.25),
-                                           std::make_tuple("fandisk.off", 0.10, 0.25),
-                                           std::make_tuple("bunny00.off", 0.02, 0.0),
-                                           std::make_tuple("bunny00.off", 0.05, 0.0),
-                                           std::make_tuple("bunny00.off", 0.10, 0.0)),
-                         [](const ::testing::TestParamInfo<std::tuple<std::string, double, double>>& p) {
-                           return caseName(std::get<0>(p.param), std::get<1>(p.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Fig14, AdaptiveError,
+    ::testing::Values(std::make_tuple("fandisk.off", 0.02, 0.25), std::make_tuple("fandisk.off", 0.05, 0.25),
+                      std::make_tuple("fandisk.off", 0.10, 0.25), std::make_tuple("bunny00.off", 0.02, 0.0),
+                      std::make_tuple("bunny00.off", 0.05, 0.0), std::make_tuple("bunny00.off", 0.10, 0.0)),
+    [](const ::testing::TestParamInfo<std::tuple<std::string, double, double>>& p) {
+      return caseName(std::get<0>(p.param), std::get<1>(p.param));
+    });
 
 // ------------------------------------------------------------------------------------------------
 // (b) Topology guarantees of the adaptive result
@@ -175,10 +174,11 @@ void expectSameTopology(const std::string& label, const TriMesh& m, const Metric
   const Expected<SurfaceRemeshResult> r = remesh(m, metric, target);
   ASSERT_TRUE(r) << label << ": " << r.status().message;
   const test::Recount out = test::recount(r->mesh.triangles, r->mesh.vertexCount());
-  std::printf("%-22s %2.0f%%: %d samples + %d added in %d rounds -> %d vertices; components %d/%d, genus %d/%d, "
-              "boundary loops %d/%d\n",
-              label.c_str(), 100 * fraction, target, r->addedSamples, r->repairRounds, r->mesh.vertexCount(),
-              out.components, input.components, out.genusSum, input.genusSum, out.boundaryLoops, input.boundaryLoops);
+  std::printf(
+      "%-22s %2.0f%%: %d samples + %d added in %d rounds -> %d vertices; components %d/%d, genus %d/%d, "
+      "boundary loops %d/%d\n",
+      label.c_str(), 100 * fraction, target, r->addedSamples, r->repairRounds, r->mesh.vertexCount(), out.components,
+      input.components, out.genusSum, input.genusSum, out.boundaryLoops, input.boundaryLoops);
   EXPECT_EQ(r->mesh.vertexCount(), target + r->addedSamples - r->droppedSamples);
   EXPECT_TRUE(out.manifoldEdges) << label;
   EXPECT_EQ(out.closedManifoldEdges, input.closedManifoldEdges) << label;
@@ -216,7 +216,8 @@ TEST(AdaptiveTopologySynthetic, TwoComponentsAtTenAndThirtyPercent) {
   std::vector<Vec3> pos = a.positions;
   std::vector<Tri> tris = a.triangles;
   for (const Vec3& p : b.positions) pos.push_back(Vec3(2.0 * p.x() + 3.0, p.y(), p.z()));
-  for (const Tri& t : b.triangles) tris.push_back({t[0] + a.vertexCount(), t[1] + a.vertexCount(), t[2] + a.vertexCount()});
+  for (const Tri& t : b.triangles)
+    tris.push_back({t[0] + a.vertexCount(), t[1] + a.vertexCount(), t[2] + a.vertexCount()});
   const TriMesh m = std::move(buildTriMesh(pos, tris)).value();
   const Metric metric = curvatureMetric(m);
   ASSERT_FALSE(metric.isUniform());

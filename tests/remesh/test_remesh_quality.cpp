@@ -2,7 +2,7 @@
 // of triangles with an angle under 30 degrees) on fandisk, bunny00 and armadillo at 10% and 30%,
 // at the default settings: the whole core pipeline (core/remesh/remesh.h) on the input as it is. The
 // geodesic Delaunay triangulation alone does not meet the bounds at this resolution (samples on
-// input vertices, cells of 3-10 vertices: 0.3-20 deg, 2.6-7.8% of triangles; docs/BENCHMARKS.md);
+// input vertices, cells of 3-10 vertices: 0.5-20.4 deg, 2.6-7.8% of triangles; docs/BENCHMARKS.md);
 // the relaxation after it does. Angles are recomputed here from the positions (independently of
 // angleStatistics), and the test also checks what the relaxation must not break: the topology
 // (recounted independently), and every vertex on the input surface.

@@ -132,18 +132,6 @@ TEST(FastMarchingShapes, TwoSpeedPlaneRefractsByFermatsPrinciple) {
   }
 }
 
-/// Largest angle of any face, in degrees.
-double largestAngleDegrees(const TriMesh& m) {
-  double largest = 0.0;
-  for (const Tri& t : m.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 u = m.positions[t[(k + 1) % 3]] - m.positions[t[k]],
-                 w = m.positions[t[(k + 2) % 3]] - m.positions[t[k]];
-      largest = std::max(largest, std::acos(std::clamp(u.dot(w) / (u.norm() * w.norm()), -1.0, 1.0)) * 180.0 / kPi);
-    }
-  return largest;
-}
-
 // Strongly jittered grids (angles above 150 degrees, up to nearly 180): the acceptance order
 // is monotone and the mean relative error against the Euclidean distance is below 1% at every
 // size, 100 x 100 included. The observed order is printed, not asserted: the update is exact on
@@ -157,7 +145,7 @@ TEST(FastMarchingShapes, StronglyJitteredGrids) {
       double sum = 0.0, biggest = 0.0;
       for (unsigned seed : {11u, 12u, 13u}) {
         const TriMesh m = test::planeGrid(n, 1.0, jitter, seed);
-        biggest = std::max(biggest, largestAngleDegrees(m));
+        biggest = std::max(biggest, test::recountAngles(m).largestDegrees);
         const int source = (n / 2) * (n + 1) + n / 2;
         const auto r = fastMarching(m, Metric::uniform(), {source});
         ASSERT_TRUE(r);

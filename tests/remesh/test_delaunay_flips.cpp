@@ -174,18 +174,6 @@ TEST(DelaunayFlips, CreaseIsKept) {
   EXPECT_LT(creaseEdgesLeft(unchecked, n), n);
 }
 
-/// Largest angle of any face, in degrees.
-double largestAngleDegrees(const TriMesh& m) {
-  double largest = 0.0;
-  for (const Tri& t : m.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 u = m.positions[t[(k + 1) % 3]] - m.positions[t[k]],
-                 w = m.positions[t[(k + 2) % 3]] - m.positions[t[k]];
-      largest = std::max(largest, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / kPi);
-    }
-  return largest;
-}
-
 // A cap: x on the segment ab up to a rounding-sized offset out of the plane, as three samples on
 // one straight line of the input give after MeshLab's floats (seen on armadillo subdivided three
 // times, adaptive remesh to 100k: 204 such faces). Its normal is perpendicular to the plane of
@@ -203,9 +191,9 @@ TEST(DelaunayFlips, CapIsFlippedAway) {
     const std::vector<Vec3> p = {{0, 0, 0}, {2, 0, 0}, {1, 0, lift}, {1, -1, 0}, {1, 1, 0}};
     const int a = 0, b = 1, x = 2, y = 3, c = 4;
     TriMesh m = buildTriMesh(p, {{a, y, b}, {a, b, x}, {x, b, c}, {a, x, c}}).value();
-    ASSERT_GT(largestAngleDegrees(m), 179.4);
+    ASSERT_GT(test::recountAngles(m).largestDegrees, 179.4);
     EXPECT_GE(flipCount(m), 1);
-    EXPECT_LT(largestAngleDegrees(m), 91.0);
+    EXPECT_LT(test::recountAngles(m).largestDegrees, 91.0);
     EXPECT_EQ(m.faceCount(), 4);
     EXPECT_EQ(m.topology.inconsistentEdges, 0);
     EXPECT_EQ(m.topology.boundaryLoops, 1);

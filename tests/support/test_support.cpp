@@ -362,7 +362,9 @@ AngleRecount recountAngles(const TriMesh& mesh) {
     for (int k = 0; k < 3; ++k) {
       const Vec3 u = mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]];
       const Vec3 w = mesh.positions[t[(k + 2) % 3]] - mesh.positions[t[k]];
-      minAngle = std::min(minAngle, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / kPi);
+      const double angle = std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / kPi;
+      minAngle = std::min(minAngle, angle);
+      r.largestDegrees = std::max(r.largestDegrees, angle);
     }
     r.smallestDegrees = std::min(r.smallestDegrees, minAngle);
     below30 += minAngle < 30.0;

@@ -85,6 +85,7 @@ namespace gr::test {
 /// atan2(|u x w|, u . w) at each corner (0 for a zero-length edge).
 struct AngleRecount {
   double smallestDegrees = 180.0;  ///< smallest angle of any triangle
+  double largestDegrees = 0.0;     ///< largest angle of any triangle
   double shareBelow30 = 0.0;       ///< share of triangles whose smallest angle is under 30 degrees
 };
 AngleRecount recountAngles(const TriMesh& mesh);

@@ -482,7 +482,7 @@ TEST(FastMarchingMetric, FromSpeedRejectsBadSpeedsNamingTheVertex) {
 // ---------------------------------------------------------------------------------------------
 // Several sources.
 
-TEST(FastMarchingSources, LabelsAreTheNearestSource) {
+TEST(FastMarchingSources, CellsAreTheNearestSource) {
   TriMesh m = test::loadRealMesh("fandisk.off");
   ASSERT_GT(m.vertexCount(), 0);
   const double h = m.meanEdgeLength();
@@ -539,7 +539,7 @@ TEST(FastMarchingSources, LabelsAreTheNearestSource) {
   EXPECT_GE(cellChecked, 0.8 * m.vertexCount());
 }
 
-TEST(FastMarchingSources, DuplicateSourceKeepsItsFirstLabel) {
+TEST(FastMarchingSources, DuplicateSourceKeepsItsFirstCell) {
   TriMesh m = test::planeGrid(10);
   FastMarchingResult r = run(m, {30, 5, 30});
   EXPECT_EQ(r.cell[30], 0);

@@ -22,7 +22,7 @@ int argmaxFinite(const std::vector<double>& d) {
 class Incremental : public ::testing::TestWithParam<std::string> {};
 
 // Sources added one at a time (each at the farthest vertex, as greedy sampling does) give the
-// same field and labels as one run with all of them, and each step accepts exactly the vertices
+// same field and cells as one run with all of them, and each step accepts exactly the vertices
 // whose distance decreased.
 TEST_P(Incremental, EqualsMultiSourceRunAndVisitsOnlyImprovedVertices) {
   const TriMesh m = test::loadRealMesh(GetParam());

@@ -34,7 +34,7 @@ Offsets offsetsFromPlane(const TriMesh& m, const std::vector<VoronoiEdgePoint>& 
 }
 
 void expectWellFormed(const TriMesh& m, const FastMarchingResult& r, const std::vector<VoronoiEdgePoint>& points) {
-  // Exactly the edges whose ends have different labels, each once.
+  // Exactly the edges whose ends have different cells, each once.
   std::set<std::pair<int, int>> expected, got;
   for (const Tri& t : m.triangles)
     for (int k = 0; k < 3; ++k) {
@@ -87,7 +87,7 @@ TEST(VoronoiBoundary, TwoSourcesOnAPlaneMeetOnTheBisector) {
               points.size(), o.mean / h, o.max / h, o.meanMidpoint / h);
   // Known limitation, measured: mean 0.17 h, max 0.85 h, against 0.32 h for edge midpoints.
   // Near the bisector the field mixes both fronts in one triangle update (kept so that
-  // incremental and one-shot fields agree), which moves labels and values by a fraction of h;
+  // incremental and one-shot fields agree), which moves cells and values by a fraction of h;
   // the sphere case above, where the fronts meet head-on, is within 0.01 h. A per-front overlap
   // of one or two rings (the paper's two arrival times per vertex) would remove this.
   EXPECT_LT(o.mean, 0.6 * o.meanMidpoint);

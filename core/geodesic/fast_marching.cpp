@@ -18,14 +18,20 @@ constexpr int kSeedDepthFace = 3;
 
 }  // namespace
 
-FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : mesh_(mesh), uniform_(metric.isUniform()) {
+FastMarcher::FastMarcher(const TriMesh& mesh, const Metric& metric) : FastMarcher(mesh, nullptr, metric) {}
+
+FastMarcher::FastMarcher(const TriMesh& mesh, const std::vector<double>& cornerLength, const Metric& metric)
+    : FastMarcher(mesh, &cornerLength, metric) {}
+
+FastMarcher::FastMarcher(const TriMesh& mesh, const std::vector<double>* cornerLength, const Metric& metric)
+    : mesh_(mesh), length_(mesh, cornerLength), uniform_(metric.isUniform()) {
   const int nv = mesh.vertexCount();
   // The acute splits (a fifth of the construction) on a second thread, while this one orders
   // the vertices; they are first needed by the star records. The same result either way.
   // (std::async: an exception in it reaches get(), and the future waits for it if this throws;
   // with deferred allowed too, libstdc++ runs it in get() when no thread can be started.)
-  std::future<AcuteSplits> splitter =
-      std::async(std::launch::async | std::launch::deferred, [&mesh] { return findAcuteSplits(mesh); });
+  std::future<AcuteSplits> splitter = std::async(std::launch::async | std::launch::deferred,
+                                                 [&mesh, cornerLength] { return findAcuteSplits(mesh, cornerLength); });
   orderSlotsBreadthFirst();
   P_.assign(nv, 1.0);
   if (!metric.isUniform())
@@ -78,8 +84,7 @@ void FastMarcher::buildStars(const AcuteSplits& splits) {
   std::vector<int> fill(starBegin_.begin(), starBegin_.end() - 1);
   for (int f = 0; f < mesh.faceCount(); ++f) {
     const Tri& t = mesh.triangles[f];
-    const Vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]], &p2 = mesh.positions[t[2]];
-    const double length[3] = {(p1 - p2).norm(), (p2 - p0).norm(), (p0 - p1).norm()};  // facing each corner
+    const double length[3] = {length_(3 * f), length_(3 * f + 1), length_(3 * f + 2)};  // facing each corner
     const int slot[3] = {slotOf_[t[0]], slotOf_[t[1]], slotOf_[t[2]]};
     const int* const splitOf = splits.splitOfCorner.data() + 3 * f;
     for (int k = 0; k < 3; ++k) {
@@ -126,10 +131,6 @@ void FastMarcher::buildSplitRecords(const AcuteSplits& splits) {
     }
     farSplitBegin_[i + 1] = static_cast<int>(farSplits_.size());
   }
-}
-
-double FastMarcher::cornerEdgeLength(int c) const {
-  return (mesh_.positions[mesh_.vertex(TriMesh::next(c))] - mesh_.positions[mesh_.vertex(TriMesh::prev(c))]).norm();
 }
 
 void FastMarcher::reset() {
@@ -221,15 +222,16 @@ void FastMarcher::seedByUnfolding(const Vec2& p, double pAtSource, int face, con
     // In the next face, the vertices of the shared edge keep their positions.
     const int g = TriMesh::face(o);
     std::array<Vec2, 3> next;
-    const int r = mesh_.vertex(o);
-    const Vec3& pr = mesh_.positions[r];
-    next[o % 3] = unfold(q1, q2, layout[k], (pr - mesh_.positions[mesh_.vertex(cn)]).norm(),
-                         (pr - mesh_.positions[mesh_.vertex(cp)]).norm());
+    // In g, the edge (R, V(cn)) faces the corner at V(cp), and (R, V(cp)) the corner at V(cn).
+    double lenToCn = 0.0, lenToCp = 0.0;
     for (int j = 0; j < 3; ++j) {
       const int corner = 3 * g + j;
       if (corner == o) continue;
-      next[j] = mesh_.vertex(corner) == mesh_.vertex(cn) ? q1 : q2;
+      const bool atCn = mesh_.vertex(corner) == mesh_.vertex(cn);
+      next[j] = atCn ? q1 : q2;
+      (atCn ? lenToCp : lenToCn) = length_(corner);
     }
+    next[o % 3] = unfold(q1, q2, layout[k], lenToCn, lenToCp);
     seedChain_.push_back({q1, q2});
     seedByUnfolding(p, pAtSource, g, next, o, depth - 1, cell);
     seedChain_.pop_back();
@@ -248,7 +250,7 @@ Status FastMarcher::addSource(const SurfacePoint& point, int cell) {
   const Tri& t = mesh_.triangles[f];
   const double pAtPoint = b[0] * P_[slotOf_[t[0]]] + b[1] * P_[slotOf_[t[1]]] + b[2] * P_[slotOf_[t[2]]];
   // The face in its plane: t[0] at the origin, t[1] on the x axis.
-  const double l01 = cornerEdgeLength(3 * f + 2), l02 = cornerEdgeLength(3 * f + 1), l12 = cornerEdgeLength(3 * f);
+  const double l01 = length_(3 * f + 2), l02 = length_(3 * f + 1), l12 = length_(3 * f);
   const std::array<Vec2, 3> layout = {Vec2(0.0, 0.0), Vec2(l01, 0.0), layoutThirdVertex(l01, l02, l12)};
   const Vec2 p = b[0] * layout[0] + b[1] * layout[1] + b[2] * layout[2];
   seedByUnfolding(p, pAtPoint, f, layout, -1, kSeedDepthFace, cell);

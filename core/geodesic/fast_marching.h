@@ -31,6 +31,7 @@
 #include "core/geodesic/detail/marcher_records.h"
 #include "core/geodesic/detail/unfold.h"
 #include "core/geodesic/metric.h"
+#include "core/mesh/face_geometry.h"
 #include "core/mesh/surface_point.h"
 #include "core/mesh/tri_mesh.h"
 
@@ -61,6 +62,10 @@ class FastMarcher {
   /// vertex (checked by Metric's factories). Precomputes the vertex order, the per-vertex star
   /// records (neighbours, edge lengths) and the acute splits: O(V + F).
   FastMarcher(const TriMesh& mesh, const Metric& metric);
+  /// The same on a triangulation that carries its own edge lengths (an intrinsic triangulation:
+  /// `cornerLength[c]` is the length of the edge facing corner c); the positions are not read.
+  /// `cornerLength` must outlive the marcher and have 3 values per face.
+  FastMarcher(const TriMesh& mesh, const std::vector<double>& cornerLength, const Metric& metric);
 
   /// Forgets all sources and distances. Cost: O(vertices ever reached since the last reset).
   void reset();
@@ -114,7 +119,6 @@ class FastMarcher {
   /// Updates the neighbours of the newly accepted vertex v.
   template <bool kUniform>
   void scatter(int v);
-  double cornerEdgeLength(int corner) const;
   /// Offers the vertices of the faces around a source the length of straight segments from the
   /// source point in the unfolding of those faces (kSeedDepth rings): exact values where a point
   /// source is too close for the triangle updates to be causal.
@@ -122,7 +126,11 @@ class FastMarcher {
                        int depth, int cell);
   void endRun();
 
+  /// The constructors' common body; `cornerLength` is null for lengths from the positions.
+  FastMarcher(const TriMesh& mesh, const std::vector<double>* cornerLength, const Metric& metric);
+
   const TriMesh& mesh_;
+  CornerLengths length_;  ///< per corner, the length of the edge it faces
   bool uniform_;
   std::vector<double> P_;  ///< per slot; all ones for a uniform metric
   // The hot loop works on slots: vertices renumbered in breadth-first order for memory

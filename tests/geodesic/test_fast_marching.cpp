@@ -691,6 +691,51 @@ TEST(FastMarcherEngine, ResetThenRunEqualsAFreshMarcher) {
   EXPECT_EQ(reused.distance(), once.distance);
 }
 
+// An intrinsic triangulation gives the engine its edge lengths: the engine must read those and
+// never the positions. A flat jittered grid (obtuse corners, so acute splits and their unfoldings
+// are exercised) and a copy with the same faces but random positions, given the flat grid's
+// lengths, yield the same fields up to rounding (the angles come from a dot product of positions
+// in one, the law of cosines in the other): from a vertex, from a point inside a face (the
+// unfolded seeding), uniform and with a varying metric. Any position read would show as an error
+// of the order of the scrambled coordinates.
+TEST(FastMarcherEngine, GivenLengthsAreTheOnlyGeometryRead) {
+  const TriMesh flat = test::planeGrid(30, 1.0, 0.45, 7);
+  std::vector<double> lengths(3 * flat.faceCount());
+  for (int c = 0; c < 3 * flat.faceCount(); ++c)
+    lengths[c] = (flat.positions[flat.vertex(TriMesh::next(c))] - flat.positions[flat.vertex(TriMesh::prev(c))]).norm();
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> coordinate(-5.0, 5.0);
+  std::vector<Vec3> scrambled(flat.vertexCount());
+  for (Vec3& p : scrambled) p = Vec3(coordinate(rng), coordinate(rng), coordinate(rng));
+  Expected<TriMesh> crumpled = buildTriMesh(scrambled, flat.triangles);
+  ASSERT_TRUE(crumpled);
+
+  std::vector<double> cost(flat.vertexCount());
+  for (int v = 0; v < flat.vertexCount(); ++v) cost[v] = 1.0 + flat.positions[v].x();
+  Expected<Metric> varying = Metric::fromCost(flat, cost);
+  ASSERT_TRUE(varying);
+  int obtuse = 0;
+  for (int c = 0; c < 3 * flat.faceCount(); ++c) {
+    const double a = lengths[TriMesh::prev(c)], b = lengths[TriMesh::next(c)], opposite = lengths[c];
+    obtuse += a * a + b * b < opposite * opposite;
+  }
+  ASSERT_GT(obtuse, 50) << "the grid must have obtuse corners";
+  for (const Metric& metric : {Metric::uniform(), *varying}) {
+    for (const SurfacePoint& source : {SurfacePoint::atVertex(465), SurfacePoint::inFace(700, Vec3(0.2, 0.3, 0.5))}) {
+      FastMarcher fromPositions(flat, metric), fromLengths(*crumpled, lengths, metric);
+      ASSERT_TRUE(fromPositions.addSource(source, 0).isOk());
+      ASSERT_TRUE(fromLengths.addSource(source, 0).isOk());
+      ASSERT_TRUE(fromPositions.propagate().isOk());
+      ASSERT_TRUE(fromLengths.propagate().isOk());
+      ASSERT_EQ(static_cast<int>(fromLengths.acceptedOrder().size()), flat.vertexCount());
+      double worst = 0.0;
+      for (int v = 0; v < flat.vertexCount(); ++v)
+        worst = std::max(worst, std::abs(fromPositions.distance()[v] - fromLengths.distance()[v]));
+      EXPECT_LT(worst, 1e-12) << "source in face " << source.face;
+    }
+  }
+}
+
 TEST(FastMarcherEngine, ProgressCanCancel) {
   TriMesh m = test::loadRealMesh("fandisk.off");
   ASSERT_GT(m.vertexCount(), 4096) << "the marcher reports every 4096 accepted vertices";

@@ -4,6 +4,7 @@
 
 #include "core/base/math.h"
 #include "core/geodesic/detail/unfold.h"
+#include "core/mesh/face_geometry.h"
 
 namespace gr {
 namespace {
@@ -16,12 +17,24 @@ int cornerAt(const TriMesh& m, int corner, int v) {
   return -1;
 }
 
-bool findSplit(const TriMesh& m, int c, int maxUnfoldings, AcuteSplit& out) {
+/// Cosine of the angle at corner c: from the positions (a dot product, exact for right angles of
+/// grid meshes) or, on an intrinsic triangulation, from its lengths (law of cosines).
+double cornerCosine(const TriMesh& m, const CornerLengths& length, int c) {
   const int x = m.vertex(c), a = m.vertex(TriMesh::next(c)), b = m.vertex(TriMesh::prev(c));
-  const Vec3& px = m.positions[x];
-  const double la = (m.positions[a] - px).norm(), lb = (m.positions[b] - px).norm();
+  if (!length.intrinsic()) {
+    const Vec3& px = m.positions[x];
+    const Vec3 ea = m.positions[a] - px, eb = m.positions[b] - px;
+    return ea.dot(eb) / (ea.norm() * eb.norm());
+  }
+  const double la = length(TriMesh::prev(c)), lb = length(TriMesh::next(c)), lab = length(c);
+  return (la * la + lb * lb - lab * lab) / (2.0 * la * lb);
+}
+
+bool findSplit(const TriMesh& m, const CornerLengths& length, int c, int maxUnfoldings, AcuteSplit& out) {
+  const int x = m.vertex(c), a = m.vertex(TriMesh::next(c)), b = m.vertex(TriMesh::prev(c));
+  const double la = length(TriMesh::prev(c)), lb = length(TriMesh::next(c));  // |XA|, |XB|
   if (la <= 0.0 || lb <= 0.0) return false;
-  const double cosTheta = (m.positions[a] - px).dot(m.positions[b] - px) / (la * lb);
+  const double cosTheta = cornerCosine(m, length, c);
   if (!(cosTheta < 0.0)) return false;
   const double theta = std::acos(std::max(-1.0, cosTheta));
   const double halfPi = 0.5 * kPi;
@@ -35,8 +48,10 @@ bool findSplit(const TriMesh& m, int c, int maxUnfoldings, AcuteSplit& out) {
     if (d < 0) return false;  // boundary or non-manifold edge
     const int r = m.vertex(d);
     if (r == x || r == a || r == b) return false;
-    const Vec2 pr =
-        unfold(p, q, third, (m.positions[r] - m.positions[pVert]).norm(), (m.positions[r] - m.positions[qVert]).norm());
+    // In the face of d, the edge (r, p) faces the corner at q and the edge (r, q) the corner at p.
+    const int atP = cornerAt(m, d, pVert), atQ = cornerAt(m, d, qVert);
+    if (atP < 0 || atQ < 0) return false;
+    const Vec2 pr = unfold(p, q, third, length(atQ), length(atP));
     const double phi = std::atan2(pr.y(), pr.x());
     if (phi > theta - halfPi && phi < halfPi && phi > 0.0 && phi < theta) {
       out = {c, r, pr.norm(), (pr - pa).norm(), (pr - pb).norm(), la, lb};
@@ -59,9 +74,22 @@ bool findSplit(const TriMesh& m, int c, int maxUnfoldings, AcuteSplit& out) {
   return false;
 }
 
+/// Corner c (of face t) is obtuse: its two edges point apart (a dot product of positions, or the
+/// law of cosines on an intrinsic triangulation).
+bool isObtuse(const TriMesh& m, const CornerLengths& length, int c, const Tri& t) {
+  if (length.intrinsic()) {
+    const double la = length(TriMesh::prev(c)), lb = length(TriMesh::next(c)), lab = length(c);
+    return la * la + lb * lb - lab * lab < 0.0;
+  }
+  const int k = c % 3;
+  const Vec3& px = m.positions[t[k]];
+  return (m.positions[t[(k + 1) % 3]] - px).dot(m.positions[t[(k + 2) % 3]] - px) < 0.0;
+}
+
 }  // namespace
 
-AcuteSplits findAcuteSplits(const TriMesh& mesh, int maxUnfoldings) {
+AcuteSplits findAcuteSplits(const TriMesh& mesh, const std::vector<double>* cornerLength, int maxUnfoldings) {
+  const CornerLengths length(mesh, cornerLength);
   AcuteSplits s;
   const int nc = 3 * mesh.faceCount();
   s.splitOfCorner.assign(nc, -1);
@@ -69,11 +97,10 @@ AcuteSplits findAcuteSplits(const TriMesh& mesh, int maxUnfoldings) {
   for (int f = 0; f < mesh.faceCount(); ++f) {
     const Tri& t = mesh.triangles[f];
     for (int k = 0; k < 3; ++k) {  // corner 3f + k: obtuse if its two edges point apart
-      const Vec3& px = mesh.positions[t[k]];
-      if ((mesh.positions[t[(k + 1) % 3]] - px).dot(mesh.positions[t[(k + 2) % 3]] - px) >= 0.0) continue;
       const int c = 3 * f + k;
+      if (!isObtuse(mesh, length, c, t)) continue;
       ++s.obtuseCorners;
-      if (findSplit(mesh, c, maxUnfoldings, split)) {
+      if (findSplit(mesh, length, c, maxUnfoldings, split)) {
         s.splitOfCorner[c] = static_cast<int>(s.splits.size());
         s.splits.push_back(split);
       }

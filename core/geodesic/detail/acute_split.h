@@ -41,6 +41,9 @@ struct AcuteSplits {
   int obtuseCorners = 0;  ///< corners with an angle above 90 degrees
 };
 
-AcuteSplits findAcuteSplits(const TriMesh& mesh, int maxUnfoldings = 12);
+/// `cornerLength`, if not null, gives per corner c the length of the edge facing c (an intrinsic
+/// triangulation); else lengths are measured between the positions.
+AcuteSplits findAcuteSplits(const TriMesh& mesh, const std::vector<double>* cornerLength = nullptr,
+                            int maxUnfoldings = 12);
 
 }  // namespace gr

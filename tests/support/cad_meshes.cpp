@@ -185,7 +185,9 @@ std::vector<Tri> earClip(const Polygon2& outline, const std::vector<Polygon2>& h
   std::stable_sort(holeRanges.begin(), holeRanges.end(),
                    [&maxX](const auto& a, const auto& b) { return maxX(a) > maxX(b); });
   for (const auto& [first, count] : holeRanges) bridgeHole(c, start, first, count);
-  return clipEars(c, start);
+  // Outline nodes are numbered as their points. Clipping starts halfway round the outline, so the
+  // fans' apexes lie across the face from point 0 (vertex 0, the usual source): the hard case.
+  return clipEars(c, static_cast<int>(outline.size()) / 2);
 }
 
 TriMesh extrudeProfile(const Polygon2& outline, const std::vector<Polygon2>& holes, double height) {

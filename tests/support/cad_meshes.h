@@ -32,8 +32,10 @@ using Polygon2 = std::vector<Eigen::Vector2d>;
 
 /// The triangles of a polygon with holes, by ear clipping (Eberly's bridges for the holes).
 /// `outline` is counter-clockwise, each hole clockwise, holes strictly inside and disjoint.
-/// Indices number the outline's points, then each hole's points, in order. After each clipped
-/// ear the next ear is tried at the vertex after it, so convex runs become fans from one vertex.
+/// Indices number the outline's points, then each hole's points, in order. Clipping starts at the
+/// outline's point size / 2; after each clipped ear the next ear is tried at the vertex after it,
+/// so convex runs become fans from one vertex (the vertex before; for a convex outline of n points,
+/// the fan of point n / 2 - 1, across from point 0).
 /// Throws std::runtime_error if no ear is found (a profile that is not a simple polygon).
 std::vector<Tri> earClip(const Polygon2& outline, const std::vector<Polygon2>& holes);
 

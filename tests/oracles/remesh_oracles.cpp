@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 
 #include "core/measure/evaluation.h"
 
@@ -33,6 +35,19 @@ CgalCalibration calibrateCgalEdgeLength(const SurfaceMesh& input, double n, int 
 TwoSidedDistance twoSidedDistance(const TriMesh& a, const TriMesh& b) {
   const SurfaceDistance there = surfaceDistance(a, b), back = surfaceDistance(b, a);
   return {std::max(there.max, back.max), std::sqrt(0.5 * (there.rms * there.rms + back.rms * back.rms))};
+}
+
+Expected<std::vector<std::pair<int, int>>> selfIntersections(const TriMesh& mesh) {
+  Expected<std::unique_ptr<SurfaceMesh>> sm = toSurfaceMesh(mesh);
+  if (!sm) return sm.status();
+  using Face = SurfaceMesh::Face_index;
+  std::vector<std::pair<Face, Face>> found;
+  CGAL::Polygon_mesh_processing::self_intersections(**sm, std::back_inserter(found));
+  // Faces were added in order to an empty Surface_mesh: face f of the mesh is Face_index f.
+  std::vector<std::pair<int, int>> pairs;
+  for (const auto& [f, g] : found) pairs.push_back(std::minmax(static_cast<int>(f.idx()), static_cast<int>(g.idx())));
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
 }
 
 }  // namespace gr::oracle

@@ -1,7 +1,11 @@
 // Independent references for remeshing: CGAL's isotropic remeshing (the competitor of the uniform
-// and adaptive remeshers, at an equal vertex count) and the two-sided surface distance every
-// remeshing comparison measures its outputs with.
+// and adaptive remeshers, at an equal vertex count), the two-sided surface distance every
+// remeshing comparison measures its outputs with, and CGAL's self-intersection test (the judge of
+// output and generated triangles).
 #pragma once
+
+#include <utility>
+#include <vector>
 
 #include "core/mesh/tri_mesh.h"
 #include "tests/oracles/cgal_mesh.h"
@@ -30,5 +34,10 @@ struct TwoSidedDistance {
   double rms = 0.0;
 };
 TwoSidedDistance twoSidedDistance(const TriMesh& a, const TriMesh& b);
+
+/// The pairs of faces (indices of `mesh`, smaller first, sorted) that intersect other than in
+/// their shared vertex or edge: CGAL::Polygon_mesh_processing::self_intersections, exact
+/// predicates. Fails as toSurfaceMesh (a non-manifold or incoherently oriented mesh).
+Expected<std::vector<std::pair<int, int>>> selfIntersections(const TriMesh& mesh);
 
 }  // namespace gr::oracle

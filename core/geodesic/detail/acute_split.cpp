@@ -74,18 +74,6 @@ bool findSplit(const TriMesh& m, const CornerLengths& length, int c, int maxUnfo
   return false;
 }
 
-/// Corner c (of face t) is obtuse: its two edges point apart (a dot product of positions, or the
-/// law of cosines on an intrinsic triangulation).
-bool isObtuse(const TriMesh& m, const CornerLengths& length, int c, const Tri& t) {
-  if (length.intrinsic()) {
-    const double la = length(TriMesh::prev(c)), lb = length(TriMesh::next(c)), lab = length(c);
-    return la * la + lb * lb - lab * lab < 0.0;
-  }
-  const int k = c % 3;
-  const Vec3& px = m.positions[t[k]];
-  return (m.positions[t[(k + 1) % 3]] - px).dot(m.positions[t[(k + 2) % 3]] - px) < 0.0;
-}
-
 }  // namespace
 
 AcuteSplits findAcuteSplits(const TriMesh& mesh, const std::vector<double>* cornerLength, int maxUnfoldings) {
@@ -95,10 +83,9 @@ AcuteSplits findAcuteSplits(const TriMesh& mesh, const std::vector<double>* corn
   s.splitOfCorner.assign(nc, -1);
   AcuteSplit split;
   for (int f = 0; f < mesh.faceCount(); ++f) {
-    const Tri& t = mesh.triangles[f];
     for (int k = 0; k < 3; ++k) {  // corner 3f + k: obtuse if its two edges point apart
       const int c = 3 * f + k;
-      if (!isObtuse(mesh, length, c, t)) continue;
+      if (!(cornerCosine(mesh, length, c) < 0.0)) continue;
       ++s.obtuseCorners;
       if (findSplit(mesh, length, c, maxUnfoldings, split)) {
         s.splitOfCorner[c] = static_cast<int>(s.splits.size());

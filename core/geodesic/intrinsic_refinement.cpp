@@ -257,6 +257,7 @@ Status Refiner::run() {
 /// sharp cones, where the intrinsic Delaunay triangulation is not simplicial).
 bool makeSimplicial(IntrinsicTriangulation& tri) {
   for (int round = 0; round < kSimplicialRounds; ++round) {
+    tri.queueAllEdges();  // flips refused in the last round may be possible after its splits
     tri.flipToDelaunay(true);
     const std::vector<int> edges = tri.nonSimplicialEdges();
     if (edges.empty()) return true;
@@ -264,6 +265,7 @@ bool makeSimplicial(IntrinsicTriangulation& tri) {
       if (h < static_cast<int>(tri.mesh().he.size()) && tri.isNonSimplicial(h) && tri.splitEdge(h, 0.5) < 0)
         tri.splitEdge(h, 0.4);
   }
+  tri.queueAllEdges();
   tri.flipToDelaunay(true);
   return tri.nonSimplicialEdges().empty();
 }

@@ -90,6 +90,15 @@ void IntrinsicTriangulation::touchFace(int f) {
   }
 }
 
+void IntrinsicTriangulation::queueAllEdges() {
+  queued_.resize(mesh_.he.size(), 0);
+  for (int h = 0; h < static_cast<int>(mesh_.he.size()); ++h)
+    if (mesh_.he[h].twin > h && !queued_[h]) {
+      queued_[h] = 1;
+      flipQueue_.push_back(h);
+    }
+}
+
 std::vector<int> IntrinsicTriangulation::takeChangedFaces() {
   std::vector<int> out;
   out.swap(changed_);

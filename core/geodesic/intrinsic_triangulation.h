@@ -66,6 +66,9 @@ class IntrinsicTriangulation {
   /// the faces changed since the last call (all edges at the first call), at most maxFlips.
   /// Returns the number of flips.
   int flipToDelaunay(bool keepSimplicial = false, long maxFlips = -1);
+  /// Puts every interior edge on the work list of the next flipToDelaunay (an edge whose flip was
+  /// refused may have become flippable without its faces changing). O(halfedges).
+  void queueAllEdges();
 
   /// Inserts a vertex at the point `bary` of face f; returns it, or -1 if the point is within 1e-12
   /// of the face's size of a vertex or could not be located on the input (nothing changed).

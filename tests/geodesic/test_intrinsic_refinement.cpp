@@ -403,6 +403,47 @@ TEST(IntrinsicRefinement, SeveralComponentsAndBoundaries) {
   }
 }
 
+// Many small components of slivers and zero-area faces, some overlapping in space, some turned
+// (the kind of mesh, a scan with 37 components, that made geometry-central's refinement crash).
+TEST(IntrinsicRefinement, ThirtySevenComponentsOfSlivers) {
+  std::vector<Vec3> p;
+  std::vector<Tri> t;
+  for (int k = 0; k < 37; ++k) {
+    int zeroArea = 0;
+    const TriMesh piece =
+        k % 2 ? test::withBadTriangles(test::planeGrid(6, 1.0, 0.3, k + 1), &zeroArea) : sliverSquare();
+    const int base = static_cast<int>(p.size());
+    const double angle = 0.3 * k;  // tilted, so that the pieces do not all lie in one plane
+    for (const Vec3& q : piece.positions)
+      p.emplace_back(q.x() + 0.5 * k, std::cos(angle) * q.y(), std::sin(angle) * q.y() + 0.1 * q.x());
+    for (const Tri& f : piece.triangles)
+      t.push_back(k % 3 ? Tri{f[0] + base, f[1] + base, f[2] + base} : Tri{f[0] + base, f[2] + base, f[1] + base});
+  }
+  const TriMesh input = buildTriMesh(p, t).value();
+  ASSERT_EQ(input.topology.components, 37);
+  const Expected<RefinedSurface> r = refineTimed("37 components of slivers", input);
+  ASSERT_TRUE(r) << r.status().message;
+  expectValidRefinement(input, *r);
+  EXPECT_GE(r->smallestAngleDegrees, 25.0 - 1e-6);
+}
+
+// Coincident vertices (a zero-length edge) are mollified: the result is still valid and Delaunay.
+TEST(IntrinsicRefinement, ZeroLengthEdge) {
+  TriMesh grid = test::planeGrid(6);
+  std::vector<Vec3> p = grid.positions;
+  p[8] = p[9];  // two neighbours of an interior edge at one place
+  const TriMesh input = buildTriMesh(p, grid.triangles).value();
+  const Expected<RefinedSurface> r = refineTimed("grid with a zero-length edge", input);
+  ASSERT_TRUE(r) << r.status().message;
+  ASSERT_NO_FATAL_FAILURE(expectWellFormed(input, *r));
+  const auto [nonDelaunay, blocked] = nonDelaunayEdges(*r, 1e-6);
+  EXPECT_EQ(nonDelaunay, blocked);
+  double area = 0.0;
+  for (int f = 0; f < r->mesh.faceCount(); ++f)
+    area += heronArea(r->cornerLength[3 * f], r->cornerLength[3 * f + 1], r->cornerLength[3 * f + 2]);
+  EXPECT_NEAR(area, 1.0, 1e-6);
+}
+
 TEST(IntrinsicRefinement, InconsistentlyOrientedFaces) {
   TriMesh good = threeComponents();
   std::vector<Tri> tris = good.triangles;

@@ -29,6 +29,7 @@
 #include "core/geodesic/triangulation_quality.h"
 #include "core/mesh/vcg_mesh.h"
 #include "tests/oracles/geodesic_oracles.h"
+#include "tests/support/cad_meshes.h"
 #include "tests/support/test_support.h"
 
 namespace gr {
@@ -371,6 +372,22 @@ INSTANTIATE_TEST_SUITE_P(Meshes, IntrinsicRefinementDataSet,
                          ::testing::Values("cheese.off", "blade.off", "turbine.off", "fandisk.off",
                                            "mech-holes-shark.off", "elephant-with-holes.off"),
                          [](const ::testing::TestParamInfo<std::string>& p) { return test::testNameOfFile(p.param); });
+
+// Issue 17's CAD-like acceptance meshes (tests/support/cad_meshes.h): vertices only on the outlines,
+// slivers across every flat face; the gear plate is 2% thick. Inserted points are checked against
+// CGAL's exact geodesics around two of them.
+TEST(IntrinsicRefinement, CadAcceptanceMeshes) {
+  for (const test::CadMesh& cad : test::cadMeshes()) {
+    SCOPED_TRACE(cad.name);
+    EXPECT_TRUE(assessTriangulation(cad.mesh).needsRefinement);
+    const Expected<RefinedSurface> r = refineTimed(cad.name, cad.mesh);
+    ASSERT_TRUE(r) << r.status().message;
+    expectValidRefinement(cad.mesh, *r);
+    EXPECT_FALSE(r->budgetExhausted);
+    EXPECT_EQ(r->facesBelowMinAngle, 0);
+    expectGeodesicLengths(cad.mesh, *r, 2);
+  }
+}
 
 /// Several components in one mesh: a sphere, the sliver square moved aside, a cylinder.
 TriMesh threeComponents() {

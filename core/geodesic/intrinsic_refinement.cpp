@@ -340,10 +340,12 @@ Expected<RefinedSurface> refineIntrinsicDelaunay(const TriMesh& input, const Int
   for (int pass = 0; pass < 2; ++pass) {
     if (!params.flipOnly)
       if (Status s = refiner.run(); !s) return s;
+    const int before = tri.mesh().vertexCount();
     if (!makeSimplicial(tri))
       return internalError("intrinsic Delaunay refinement: " + std::to_string(tri.nonSimplicialEdges().size()) +
                            " edges still join a vertex to itself or repeat another edge after " +
                            std::to_string(kSimplicialRounds) + " rounds of splits");
+    if (tri.mesh().vertexCount() == before) break;  // nothing was split: nothing to refine again
     refiner.keepSimplicial();
   }
   Expected<RefinedSurface> out = buildOutput(tri, input, *oriented, flipped);

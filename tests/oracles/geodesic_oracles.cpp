@@ -9,6 +9,7 @@
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -59,6 +60,42 @@ std::vector<double> exactGeodesic(const TriMesh& mesh, int source) {
   sp.add_source_point(SmVertex(source));
   std::vector<double> d(mesh.vertexCount());
   for (int v = 0; v < mesh.vertexCount(); ++v) d[v] = sp.shortest_distance_to_source_points(SmVertex(v)).first;
+  return d;
+}
+
+namespace {
+
+/// A SurfacePoint as CGAL's face location: coordinates in the order source(halfedge(f)),
+/// target(halfedge(f)), target(next(halfedge(f))).
+template <class ShortestPath>
+typename ShortestPath::Face_location cgalLocation(const TriMesh& mesh, const SurfaceMesh& sm, const SurfacePoint& p) {
+  if (p.vertex >= 0) return ShortestPath::face_location(SmVertex(p.vertex), sm);
+  const SurfaceMesh::Face_index f(static_cast<SurfaceMesh::size_type>(p.face));
+  const auto h = sm.halfedge(f);
+  const std::array<SmVertex, 3> w = {sm.source(h), sm.target(h), sm.target(sm.next(h))};
+  typename ShortestPath::Barycentric_coordinates b{};
+  for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < 3; ++k)
+      if (static_cast<int>(w[j].idx()) == mesh.triangles[p.face][k]) b[j] = p.bary[k];
+  return {f, b};
+}
+
+}  // namespace
+
+std::vector<double> exactGeodesicBetween(const TriMesh& mesh, const SurfacePoint& source,
+                                         const std::vector<SurfacePoint>& targets) {
+  using Traits = CGAL::Surface_mesh_shortest_path_traits<Kernel, SurfaceMesh>;
+  using ShortestPath = CGAL::Surface_mesh_shortest_path<Traits>;
+  Expected<std::unique_ptr<SurfaceMesh>> sm = toSurfaceMesh(mesh);
+  if (!sm) throw std::runtime_error(sm.status().message);
+  ShortestPath sp(**sm);
+  sp.add_source_point(cgalLocation<ShortestPath>(mesh, **sm, source));
+  std::vector<double> d;
+  d.reserve(targets.size());
+  for (const SurfacePoint& t : targets) {
+    const auto loc = cgalLocation<ShortestPath>(mesh, **sm, t);
+    d.push_back(sp.shortest_distance_to_source_points(loc.first, loc.second).first);
+  }
   return d;
 }
 

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/mesh/surface_point.h"
 #include "core/mesh/tri_mesh.h"
 #include "tests/oracles/cgal_mesh.h"
 
@@ -16,6 +17,11 @@ namespace gr::oracle {
 
 /// Exact polyhedral geodesic distance from vertex `source` (CGAL). Slow: seconds on 40k vertices.
 std::vector<double> exactGeodesic(const TriMesh& mesh, int source);
+
+/// Exact polyhedral geodesic distance from the surface point `source` to each of `targets`
+/// (CGAL, with face locations: the barycentric coordinates are reordered to CGAL's corners).
+std::vector<double> exactGeodesicBetween(const TriMesh& mesh, const SurfacePoint& source,
+                                         const std::vector<SurfacePoint>& targets);
 
 /// How many vertices a field reached, and the largest distance among them.
 struct Reached {

@@ -5,6 +5,7 @@
 #include <future>
 #include <string>
 
+#include "core/base/math.h"
 #include "core/geodesic/detail/eikonal_update.h"
 #include "core/geodesic/detail/unfold.h"
 
@@ -144,6 +145,7 @@ void FastMarcher::reset() {
   acceptedVertices_.clear();
   saved_.clear();
   heap_.clear();
+  sourceSlotOfCell_.clear();
   runOpen_ = false;
 }
 
@@ -156,31 +158,24 @@ void FastMarcher::beginRun() {
   saved_.clear();
 }
 
-Status FastMarcher::addSource(int v, int cell) {
-  if (v < 0 || v >= mesh_.vertexCount())
-    return invalidInput("source vertex " + std::to_string(v) + " does not exist (the mesh has " +
-                        std::to_string(mesh_.vertexCount()) + " vertices)");
-  beginRun();
-  if (node_[slotOf_[v]].u <= 0.0) return Status::ok();
-  const int sv = slotOf_[v];
-  push(sv, 0.0, cell);
-  // The faces around v, v at the origin, read from its star records: their vertices get the
-  // edge lengths; the vertex across each outer edge gets the straight line from v in the
+void FastMarcher::seedAcrossStar(int sv, int cell) {
+  // The faces around sv, sv at the origin, read from its star records: their vertices get the
+  // edge lengths; the vertex across each outer edge gets the straight line from sv in the
   // unfolding when that line crosses the edge (what seedByUnfolding does one ring deep, without
   // revisiting each face from its neighbours). The face across edge ab is found in a's star,
-  // which the breadth-first slots keep near v's: no read of the mesh's own arrays.
-  const double pv = P_[sv];
+  // which the breadth-first slots keep near sv's: no read of the mesh's own arrays.
+  const double u0 = node_[sv].u, pv = P_[sv];
   const StarFace* const first = star_.data() + starBegin_[sv];
   const StarFace* const last = star_.data() + starBegin_[sv + 1];
   for (const StarFace* f = first; f != last; ++f) {
-    relax(f->a, 0.5 * (pv + P_[f->a]) * f->lva, cell);
-    relax(f->b, 0.5 * (pv + P_[f->b]) * f->lvb, cell);
+    relax(f->a, u0 + 0.5 * (pv + P_[f->a]) * f->lva, cell);
+    relax(f->b, u0 + 0.5 * (pv + P_[f->b]) * f->lvb, cell);
     if (!(f->lva > 0.0)) continue;
     int r = -1;
     double lar = 0.0, lbr = 0.0;
     for (const StarFace *g = star_.data() + starBegin_[f->a], *end = star_.data() + starBegin_[f->a + 1]; g != end;
          ++g) {
-      if (g->b == f->b && g->a != sv) {  // face (a, R, b): the orientation of v's face
+      if (g->b == f->b && g->a != sv) {  // face (a, R, b): the orientation of sv's face
         r = g->a, lar = g->lva, lbr = g->lab;
         break;
       }
@@ -193,8 +188,63 @@ Status FastMarcher::addSource(int v, int cell) {
     const Vec2 a(f->lva, 0.0), b = layoutThirdVertex(f->lva, f->lvb, f->lab);
     if ((b - a).squaredNorm() <= 0.0) continue;
     const Vec2 q = unfold(a, b, Vec2(0.0, 0.0), lar, lbr);
-    if (segmentsIntersect(Vec2(0.0, 0.0), q, a, b)) relax(r, 0.5 * (pv + P_[r]) * q.norm(), cell);
+    if (segmentsIntersect(Vec2(0.0, 0.0), q, a, b)) relax(r, u0 + 0.5 * (pv + P_[r]) * q.norm(), cell);
   }
+}
+
+void FastMarcher::setSaddleSeeding(bool on, bool boundaryOnly) {
+  saddle_.clear();
+  if (!on) return;
+  const int nv = mesh_.vertexCount();
+  const std::vector<char> onBoundary = boundaryVertexFlags(mesh_);
+  saddle_.assign(nv, 0);
+  for (int i = 0; i < nv; ++i) {
+    if (boundaryOnly) {
+      saddle_[i] = onBoundary[vertexOf_[i]];
+      continue;
+    }
+    double angleSum = 0.0;
+    for (int k = starBegin_[i]; k < starBegin_[i + 1]; ++k) {
+      const StarFace& f = star_[k];
+      if (f.lva > 0.0 && f.lvb > 0.0)
+        angleSum +=
+            std::acos(std::clamp((f.lva * f.lva + f.lvb * f.lvb - f.lab * f.lab) / (2.0 * f.lva * f.lvb), -1.0, 1.0));
+    }
+    saddle_[i] = onBoundary[vertexOf_[i]] || angleSum > 2.0 * kPi * (1.0 + 1e-6);
+  }
+}
+
+void FastMarcher::setChordBound(bool on) {
+  chordPosition_.clear();
+  if (!on || !uniform_) return;
+  chordPosition_.resize(mesh_.vertexCount());
+  for (int i = 0; i < mesh_.vertexCount(); ++i) chordPosition_[i] = mesh_.positions[vertexOf_[i]];
+}
+
+void FastMarcher::noteSourceOfCell(int cell, int slot) {
+  if (cell < 0) return;
+  if (cell >= static_cast<int>(sourceSlotOfCell_.size())) sourceSlotOfCell_.resize(cell + 1, -2);
+  int& s = sourceSlotOfCell_[cell];
+  s = s == -2 || s == slot ? slot : -1;
+}
+
+double FastMarcher::chordBound(int v) const {
+  const int cell = node_[v].cell;
+  if (cell < 0 || cell >= static_cast<int>(sourceSlotOfCell_.size())) return 0.0;
+  const int s = sourceSlotOfCell_[cell];
+  return s < 0 ? 0.0 : (chordPosition_[v] - chordPosition_[s]).norm();
+}
+
+Status FastMarcher::addSource(int v, int cell) {
+  if (v < 0 || v >= mesh_.vertexCount())
+    return invalidInput("source vertex " + std::to_string(v) + " does not exist (the mesh has " +
+                        std::to_string(mesh_.vertexCount()) + " vertices)");
+  beginRun();
+  if (node_[slotOf_[v]].u <= 0.0) return Status::ok();
+  const int sv = slotOf_[v];
+  noteSourceOfCell(cell, sv);
+  push(sv, 0.0, cell);
+  seedAcrossStar(sv, cell);
   return Status::ok();
 }
 
@@ -246,6 +296,7 @@ Status FastMarcher::addSource(const SurfacePoint& point, int cell) {
   if (!b.allFinite() || b.minCoeff() < -1e-9 || std::abs(b.sum() - 1.0) > 1e-6)
     return invalidInput("barycentric coordinates of a source must be >= 0 and sum to 1");
   beginRun();
+  noteSourceOfCell(cell, -1);
   const int f = point.face;
   const Tri& t = mesh_.triangles[f];
   const double pAtPoint = b[0] * P_[slotOf_[t[0]]] + b[1] * P_[slotOf_[t[1]]] + b[2] * P_[slotOf_[t[2]]];
@@ -363,6 +414,14 @@ Status FastMarcher::propagate(const FastMarchingParams& params, Progress progres
   while (!heap_.empty()) {
     if (heap_.top().key > params.maxDistance) break;  // left in the heap: endRun() clears it
     const int v = heap_.pop();
+    if (!chordPosition_.empty()) {
+      const double bound = chordBound(v);
+      if (node_[v].u < bound) {  // back into the heap at the bound
+        node_[v].u = bound;
+        heap_.pushOrDecrease(v, bound);
+        continue;
+      }
+    }
     if (!heap_.empty()) {
       // The star of the vertex now on top, most often the next one scattered: its records
       // (four cache lines at valence 6) load while v is scattered.
@@ -378,6 +437,7 @@ Status FastMarcher::propagate(const FastMarchingParams& params, Progress progres
         return cancelled();
       }
     }
+    if (!saddle_.empty() && saddle_[v]) seedAcrossStar(v, node_[v].cell);
     if (uniform_) {
       scatter<true>(v);
     } else {

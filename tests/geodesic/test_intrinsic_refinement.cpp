@@ -523,7 +523,13 @@ TEST(TriangulationQuality, GoodMeshesNeedNoRefinementAndCadMeshesDo) {
   }
   EXPECT_TRUE(assessTriangulation(sliverSquare()).needsRefinement);
   EXPECT_FALSE(assessTriangulation(test::icosphere(3)).needsRefinement);
-  EXPECT_FALSE(assessTriangulation(test::planeGrid(10)).needsRefinement);
+  EXPECT_FALSE(assessTriangulation(test::planeGrid(60)).needsRefinement);
+  // Coarse: edges above 5% of the diagonal on more than 1% of the faces (a grid of 10 x 10
+  // squares: 7%), however well shaped.
+  const TriangulationQuality coarse = assessTriangulation(test::planeGrid(10));
+  EXPECT_TRUE(coarse.needsRefinement);
+  EXPECT_DOUBLE_EQ(coarse.longEdgeShare, 1.0);
+  EXPECT_EQ(coarse.sliverShare, 0.0);
 }
 
 }  // namespace
@@ -538,7 +544,11 @@ class IntrinsicRefinementSweep : public ::testing::TestWithParam<std::string> {}
 
 TEST_P(IntrinsicRefinementSweep, ValidOrRefused) {
   Expected<TriMesh> loaded = loadTriMesh(test::meshPath(GetParam()));
-  if (!loaded) GTEST_SKIP() << "not a surface: " << loaded.status().message;  // b9.ply, a point cloud
+  if (!loaded) {  // b9.ply, a point cloud: refused by the loader, with the reason
+    EXPECT_EQ(loaded.status().code, StatusCode::InvalidInput) << loaded.status().message;
+    EXPECT_NE(loaded.status().message.find("no faces"), std::string::npos) << loaded.status().message;
+    return;
+  }
   const TriMesh& input = *loaded;
   const Expected<RefinedSurface> r = refineTimed(GetParam(), input);
   if (!r) {

@@ -591,6 +591,7 @@ void registerAll() {
     }
   }
   for (const MeshSpec& spec : kSliverMeshes) {
+    add("Ours_FastMarcher", BM_OursFastMarcher, spec);
     add("Ours_fastMarching_oneshot", BM_OursOneShot, spec);
     add("Ours_geodesicDistance", BM_OursGeodesicDistance, spec);
     add("Vcg_Geodesic", BM_VcgGeodesic, spec);

@@ -214,6 +214,26 @@ void FastMarcher::setSaddleSeeding(bool on, bool boundaryOnly) {
   }
 }
 
+void FastMarcher::setPathEdges(const std::vector<std::array<int, 2>>& edges, const std::vector<double>& lengths) {
+  pathBegin_.clear();
+  pathEdges_.clear();
+  if (edges.empty()) return;
+  const int nv = mesh_.vertexCount();
+  pathBegin_.assign(nv + 1, 0);
+  for (const auto& e : edges) {
+    ++pathBegin_[slotOf_[e[0]] + 1];
+    ++pathBegin_[slotOf_[e[1]] + 1];
+  }
+  for (int i = 0; i < nv; ++i) pathBegin_[i + 1] += pathBegin_[i];
+  pathEdges_.resize(pathBegin_[nv]);
+  std::vector<int> fill(pathBegin_.begin(), pathBegin_.end() - 1);
+  for (size_t k = 0; k < edges.size(); ++k) {
+    const int a = slotOf_[edges[k][0]], b = slotOf_[edges[k][1]];
+    pathEdges_[fill[a]++] = {b, lengths[k]};
+    pathEdges_[fill[b]++] = {a, lengths[k]};
+  }
+}
+
 void FastMarcher::setChordBound(bool on) {
   chordPosition_.clear();
   if (!on || !uniform_) return;
@@ -438,6 +458,11 @@ Status FastMarcher::propagate(const FastMarchingParams& params, Progress progres
       }
     }
     if (!saddle_.empty() && saddle_[v]) seedAcrossStar(v, node_[v].cell);
+    if (!pathBegin_.empty())
+      for (int k = pathBegin_[v]; k < pathBegin_[v + 1]; ++k) {
+        const PathEdge& e = pathEdges_[k];
+        relax(e.to, node_[v].u + 0.5 * (P_[v] + P_[e.to]) * e.length, node_[v].cell);
+      }
     if (uniform_) {
       scatter<true>(v);
     } else {

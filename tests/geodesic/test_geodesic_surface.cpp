@@ -125,14 +125,15 @@ TEST_P(DataSetGeodesic, WithinOnePercentOfExactAndNoWorseThanVcglib) {
   // faces that glue its two halves along a segment fronts cannot cross by triangle updates (16%;
   // mollifying flat faces gives 0% but bends every flat face of the refinement by 1e-5 of the
   // mean edge length, beyond the refinement's area and angle-sum invariants); star.off (14
-  // vertices, 0.44% against vcglib's 0.05%). Held at their measured figures, so that any change
-  // shows.
+  // vertices, a cube with a spike on each face: 0.28% against vcglib's 0.05%, the refined front
+  // undershoots by 2.5% at the saddle corner across a spike from the source). Held at their
+  // measured figures, so that any change shows.
   if (GetParam() == "degtri_sliding.off") {
     EXPECT_LE(a.ours.meanRelative, 0.161);
     return;
   }
   if (GetParam() == "star.off") {
-    EXPECT_LE(a.ours.meanRelative, 0.0045);
+    EXPECT_LE(a.ours.meanRelative, 0.0029);
     return;
   }
   EXPECT_LE(a.ours.meanRelative, 0.01);

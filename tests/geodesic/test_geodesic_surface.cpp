@@ -93,10 +93,11 @@ Accuracy accuracyOf(const std::string& name, const TriMesh& m) {
   const std::vector<double> exact = exactFromVertex0(m);
   a.ours = distanceError(a.result.field.distance, exact);
   a.vcglib = distanceError(oracle::vcgGeodesic(m, 0), exact);
-  std::printf("%-28s %6d v, %s, %6d points inserted, %7.1f ms: mean %.3f %% max %.3f %% | vcglib mean %.3f %% max %.3f %%\n",
-              name.c_str(), m.vertexCount(), a.result.refined ? "refined" : "as it is", a.result.insertedPoints, a.ms,
-              100 * a.ours.meanRelative, 100 * a.ours.maxRelativeToMax, 100 * a.vcglib.meanRelative,
-              100 * a.vcglib.maxRelativeToMax);
+  std::printf(
+      "%-28s %6d v, %s, %6d points inserted, %7.1f ms: mean %.3f %% max %.3f %% | vcglib mean %.3f %% max %.3f %%\n",
+      name.c_str(), m.vertexCount(), a.result.refined ? "refined" : "as it is", a.result.insertedPoints, a.ms,
+      100 * a.ours.meanRelative, 100 * a.ours.maxRelativeToMax, 100 * a.vcglib.meanRelative,
+      100 * a.vcglib.maxRelativeToMax);
   return a;
 }
 
@@ -218,6 +219,27 @@ TEST(GeodesicSurface, MultiSourceLimitAndSpeedOnARefinedSurface) {
     nearest[v] = std::min(exact0[v], exact1[v]);
   }
   EXPECT_LE(distanceError(halfTime, nearest).meanRelative, 0.01);
+}
+
+// The result says when the refinement stopped at its point budget (the filter warns then): a
+// budget of 10 points on the gear runs out, with faces left below the bound; the default does not.
+TEST(GeodesicSurface, SaysWhenTheBudgetRanOut) {
+  const TriMesh m = test::cadGear();
+  const Expected<GeodesicDistanceResult> full = geodesicDistance(m, {}, {0});
+  ASSERT_TRUE(full);
+  ASSERT_TRUE(full->refined);
+  EXPECT_FALSE(full->budgetExhausted);
+  EXPECT_GT(full->insertedPoints, 10);
+  GeodesicDistanceParams small;
+  small.surface.intrinsic.maxInsertions = 10;
+  const Expected<GeodesicDistanceResult> cut = geodesicDistance(m, {}, {0}, small);
+  ASSERT_TRUE(cut);
+  ASSERT_TRUE(cut->refined);
+  EXPECT_TRUE(cut->budgetExhausted);
+  EXPECT_GT(cut->facesBelowMinAngle, 0);
+  const Expected<GeodesicDistanceResult> off = geodesicDistance(m, {}, {0}, withRefinement(SurfaceRefinement::Off));
+  ASSERT_TRUE(off);
+  EXPECT_FALSE(off->budgetExhausted);
 }
 
 TEST(GeodesicSurface, RefusesBadInput) {

@@ -129,6 +129,7 @@ Expected<GeodesicDistanceResult> geodesicDistance(const TriMesh& mesh, const std
   r.refined = surface->refined;
   r.insertedPoints = surface->insertedPoints();
   r.facesBelowMinAngle = surface->refined ? surface->refinement.facesBelowMinAngle : 0;
+  r.budgetExhausted = surface->refined && surface->refinement.budgetExhausted;
   r.inputQuality = surface->inputQuality;
   r.refinementSkipped = surface->refinementSkipped;
   return r;

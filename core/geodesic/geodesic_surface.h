@@ -99,7 +99,8 @@ struct GeodesicDistanceResult {
   FastMarchingResult field;
   bool refined = false;
   int insertedPoints = 0;
-  int facesBelowMinAngle = 0;  ///< of the refinement (faces it had to leave alone)
+  int facesBelowMinAngle = 0;    ///< of the refinement (faces it had to leave alone)
+  bool budgetExhausted = false;  ///< the refinement stopped at its point budget (maxInsertions)
   TriangulationQuality inputQuality;
   std::string refinementSkipped;  ///< see GeodesicSurface
 };

@@ -222,6 +222,27 @@ TEST(GeodesicSurface, MultiSourceLimitAndSpeedOnARefinedSurface) {
   EXPECT_LE(distanceError(halfTime, nearest).meanRelative, 0.01);
 }
 
+// The result says when the refinement stopped at its point budget (the filter warns then): a
+// budget of 10 points on the gear runs out, with faces left below the bound; the default does not.
+TEST(GeodesicSurface, SaysWhenTheBudgetRanOut) {
+  const TriMesh m = test::cadGear();
+  const Expected<GeodesicDistanceResult> full = geodesicDistance(m, {}, {0});
+  ASSERT_TRUE(full);
+  ASSERT_TRUE(full->refined);
+  EXPECT_FALSE(full->budgetExhausted);
+  EXPECT_GT(full->insertedPoints, 10);
+  GeodesicDistanceParams small;
+  small.surface.intrinsic.maxInsertions = 10;
+  const Expected<GeodesicDistanceResult> cut = geodesicDistance(m, {}, {0}, small);
+  ASSERT_TRUE(cut);
+  ASSERT_TRUE(cut->refined);
+  EXPECT_TRUE(cut->budgetExhausted);
+  EXPECT_GT(cut->facesBelowMinAngle, 0);
+  const Expected<GeodesicDistanceResult> off = geodesicDistance(m, {}, {0}, withRefinement(SurfaceRefinement::Off));
+  ASSERT_TRUE(off);
+  EXPECT_FALSE(off->budgetExhausted);
+}
+
 TEST(GeodesicSurface, RefusesBadInput) {
   const TriMesh m = test::planeGrid(4);
   EXPECT_EQ(geodesicDistance(m, {}, {}).status().code, StatusCode::InvalidInput);

@@ -32,8 +32,10 @@ void logTriangulation(const GeodesicDistanceResult& r, const GeodesicSurfacePara
             formatNumber(surface.intrinsic.minAngleDegrees) + " deg, edges <= " +
             formatNumber(100.0 * surface.maxEdgeFraction) + "% of the diagonal): " + std::to_string(r.insertedPoints) +
             " points inserted; input " + describe(r.inputQuality));
-  else
-    ctx.log("Triangulation used as it is: " + describe(r.inputQuality));
+  else if (surface.refinement == SurfaceRefinement::Off)
+    ctx.log("Refinement Off: the fronts ran on the triangulation as it is (" + describe(r.inputQuality) + ")");
+  else if (r.refinementSkipped.empty())
+    ctx.log("Triangulation fine as it is (" + describe(r.inputQuality) + "): not refined");
   if (!r.refinementSkipped.empty())
     ctx.warn("the triangulation is poor but could not be refined (" + r.refinementSkipped +
              "); the fronts ran on it as it is and may be less accurate");

@@ -248,13 +248,6 @@ void FastMarcher::noteSourceOfCell(int cell, int slot) {
   s = s == -2 || s == slot ? slot : -1;
 }
 
-double FastMarcher::chordBound(int v) const {
-  const int cell = node_[v].cell;
-  if (cell < 0 || cell >= static_cast<int>(sourceSlotOfCell_.size())) return 0.0;
-  const int s = sourceSlotOfCell_[cell];
-  return s < 0 ? 0.0 : (chordPosition_[v] - chordPosition_[s]).norm();
-}
-
 Status FastMarcher::addSource(int v, int cell) {
   if (v < 0 || v >= mesh_.vertexCount())
     return invalidInput("source vertex " + std::to_string(v) + " does not exist (the mesh has " +
@@ -434,13 +427,11 @@ Status FastMarcher::propagate(const FastMarchingParams& params, Progress progres
   while (!heap_.empty()) {
     if (heap_.top().key > params.maxDistance) break;  // left in the heap: endRun() clears it
     const int v = heap_.pop();
-    if (!chordPosition_.empty()) {
-      const double bound = chordBound(v);
-      if (node_[v].u < bound) {  // back into the heap at the bound
-        node_[v].u = bound;
-        heap_.pushOrDecrease(v, bound);
-        continue;
-      }
+    if (!chordPosition_.empty() && belowChord(v)) {  // back into the heap at the bound
+      const double bound = (chordPosition_[v] - chordPosition_[sourceSlotOfCell_[node_[v].cell]]).norm();
+      node_[v].u = bound;
+      heap_.pushOrDecrease(v, bound);
+      continue;
     }
     if (!heap_.empty()) {
       // The star of the vertex now on top, most often the next one scattered: its records

@@ -156,8 +156,16 @@ class FastMarcher {
   /// Records where cell `cell`'s source is for the chord bound (a vertex's slot, or -1 for a
   /// point inside a face: that cell is not bounded).
   void noteSourceOfCell(int cell, int slot);
-  /// The chord bound of slot v in its cell (0 when the cell is not bounded).
-  double chordBound(int v) const;
+  /// Whether slot v's value is below its chord bound (false when its cell is not bounded).
+  /// Squared lengths: no square root unless it is; a relative slack of 1e-12 so that a value set
+  /// to the bound (a rounded square root) is never found below it again.
+  bool belowChord(int v) const {
+    const int cell = node_[v].cell;
+    if (cell < 0 || cell >= static_cast<int>(sourceSlotOfCell_.size())) return false;
+    const int s = sourceSlotOfCell_[cell];
+    const double u = node_[v].u;
+    return s >= 0 && u * u < (chordPosition_[v] - chordPosition_[s]).squaredNorm() * (1.0 - 1e-12);
+  }
 
   /// The constructors' common body; `cornerLength` is null for lengths from the positions.
   FastMarcher(const TriMesh& mesh, const std::vector<double>* cornerLength, const Metric& metric);

@@ -5,7 +5,9 @@
 #   resources/fast_marching_vertex0.mlx     -> <mesh>_geodesic.ply  (distance from vertex 0 in quality, colour ramp)
 #   resources/uniform_remesh_10pct.mlx      -> <mesh>_remesh.ply    (geodesic uniform remeshing, new layer)
 #   resources/adaptive_curvature_10pct.mlx  -> <mesh>_adaptive.ply  (curvature-adaptive remeshing, new layer)
-# (the remeshing scripts ask for 647 vertices: 10% of fandisk)
+# (the remeshing scripts ask for 647 vertices: 10% of fandisk), then the distance from vertex 0 on
+# cheese.off, a CAD-like mesh of slivers: the log says the surface was refined for the fronts
+#   resources/fast_marching_vertex0.mlx     -> cheese_geodesic.ply
 # and prints MeshLab's log of each run. The plugin is loaded from a staged prefix (build/stage),
 # not from /usr.
 set -euo pipefail
@@ -20,8 +22,9 @@ bash "$root/scripts/stage_meshlab.sh" "$build/filter_geodesic_remesh/libfilter_g
 mkdir -p "$root/output"
 name=$(basename "${mesh%.*}")
 
-run() {  # run <script.mlx> <output.ply> <what the output holds>
+run() {  # run <script.mlx> <output.ply> <what the output holds> [input mesh, default $mesh]
   local script=$1 out=$2 what=$3
+  local mesh=${4:-$mesh}
   rm -f "$out"
   echo "== meshlabserver: $(basename "$mesh") -> $out, script $(basename "$script")"
   set +e
@@ -33,7 +36,7 @@ run() {  # run <script.mlx> <output.ply> <what the output holds>
   # labels with no line break, so a run of them can prefix the next log line: a label directly
   # followed by a letter (the next label or log line, with no space) is cut.
   echo "$log" | grep -vE "^LOG: |XDG_RUNTIME_DIR|no additional memory|^Loading Plugins|^Total [0-9]+ (filtering|io)|Current Plugins Dir|^$" |
-    sed -E ':a; s/^(Farthest point sampling|Fast marching|Geodesic Delaunay repair|Relaxation|Curvature|Surface distance)([A-Za-z])/\2/; ta' | sed 's/^/  /'
+    sed -E ':a; s/^(Farthest point sampling|Fast marching|intrinsic Delaunay refinement|Geodesic Delaunay repair|Relaxation|Curvature|Surface distance)([A-Za-z])/\2/; ta' | sed 's/^/  /'
   echo "== exit code $rc"
   [ $rc -eq 0 ] && [ -s "$out" ] || { echo "main: meshlabserver failed" >&2; exit 1; }
   local nv nf
@@ -48,3 +51,6 @@ run "$root/resources/uniform_remesh_10pct.mlx" "$root/output/${name}_remesh.ply"
     "geodesic uniform remeshing, colour and quality carried from the input"
 run "$root/resources/adaptive_curvature_10pct.mlx" "$root/output/${name}_adaptive.ply" \
     "curvature-adaptive geodesic remeshing (vertices gather on sharp edges)"
+run "$root/resources/fast_marching_vertex0.mlx" "$root/output/cheese_geodesic.ply" \
+    "distance from vertex 0 on cheese.off (slivers: fronts on its intrinsic Delaunay refinement)" \
+    "$cache/meshes/cheese.off"

@@ -10,12 +10,9 @@ namespace {
 
 bool wantsRefinement(const GeodesicSurfaceParams& params, const TriangulationQuality& quality) {
   switch (params.refinement) {
-    case SurfaceRefinement::On:
-      return quality.faces > 0;
-    case SurfaceRefinement::Off:
-      return false;
-    case SurfaceRefinement::Auto:
-      break;
+    case SurfaceRefinement::On: return quality.faces > 0;
+    case SurfaceRefinement::Off: return false;
+    case SurfaceRefinement::Auto: break;
   }
   return quality.needsRefinement;
 }
@@ -66,8 +63,8 @@ Expected<GeodesicSurface> prepareGeodesicSurface(const TriMesh& input, const Met
     return invalidInput("the metric has " + std::to_string(metric.P.size()) + " values for " +
                         std::to_string(input.vertexCount()) + " vertices");
   const IntrinsicRefinementParams& ip = params.intrinsic;
-  if (!(ip.minAngleDegrees >= 0.0 && ip.minAngleDegrees < 60.0) || !(ip.maxEdgeLength > 0.0) ||
-      ip.maxInsertions < -1 || !(params.maxEdgeFraction >= 0.0 && std::isfinite(params.maxEdgeFraction)))
+  if (!(ip.minAngleDegrees >= 0.0 && ip.minAngleDegrees < 60.0) || !(ip.maxEdgeLength > 0.0) || ip.maxInsertions < -1 ||
+      !(params.maxEdgeFraction >= 0.0 && std::isfinite(params.maxEdgeFraction)))
     return invalidInput("refinement parameters out of range: minimum angle " + std::to_string(ip.minAngleDegrees) +
                         " (in [0, 60) degrees), maximum edge length " + std::to_string(ip.maxEdgeLength) +
                         " (> 0), budget " + std::to_string(ip.maxInsertions) + " (>= -1), edge fraction " +
@@ -85,9 +82,8 @@ Expected<GeodesicSurface> prepareGeodesicSurface(const TriMesh& input, const Met
     const StatusCode code = refined.status().code;
     // Auto falls back to the input where refinement cannot work (non-manifold, non-orientable;
     // the parameters were checked above).
-    const bool fallBack =
-        params.refinement == SurfaceRefinement::Auto &&
-        (code == StatusCode::NonManifold || code == StatusCode::InvalidInput);
+    const bool fallBack = params.refinement == SurfaceRefinement::Auto &&
+                          (code == StatusCode::NonManifold || code == StatusCode::InvalidInput);
     if (!fallBack) return refined.status();
     s.refinementSkipped = refined.status().message;
     return s;

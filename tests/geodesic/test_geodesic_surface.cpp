@@ -93,10 +93,11 @@ Accuracy accuracyOf(const std::string& name, const TriMesh& m) {
   const std::vector<double> exact = exactFromVertex0(m);
   a.ours = distanceError(a.result.field.distance, exact);
   a.vcglib = distanceError(oracle::vcgGeodesic(m, 0), exact);
-  std::printf("%-28s %6d v, %s, %6d points inserted, %7.1f ms: mean %.3f %% max %.3f %% | vcglib mean %.3f %% max %.3f %%\n",
-              name.c_str(), m.vertexCount(), a.result.refined ? "refined" : "as it is", a.result.insertedPoints, a.ms,
-              100 * a.ours.meanRelative, 100 * a.ours.maxRelativeToMax, 100 * a.vcglib.meanRelative,
-              100 * a.vcglib.maxRelativeToMax);
+  std::printf(
+      "%-28s %6d v, %s, %6d points inserted, %7.1f ms: mean %.3f %% max %.3f %% | vcglib mean %.3f %% max %.3f %%\n",
+      name.c_str(), m.vertexCount(), a.result.refined ? "refined" : "as it is", a.result.insertedPoints, a.ms,
+      100 * a.ours.meanRelative, 100 * a.ours.maxRelativeToMax, 100 * a.vcglib.meanRelative,
+      100 * a.vcglib.maxRelativeToMax);
   return a;
 }
 

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/geodesic/fast_marching.h"
+#include "core/geodesic/geodesic_surface.h"
 #include "core/mesh/orientation.h"
 #include "core/mesh/subdivide.h"
 
@@ -61,11 +62,53 @@ Expected<OrientedSurface> orientedSurface(const TriMesh& input) {
   return s;
 }
 
+/// The mesh the fronts run on: the oriented input's intrinsic Delaunay refinement (`geodesic`
+/// refined), or the oriented input subdivided `params.refinement` times (`fine`).
+struct FrontSurface {
+  GeodesicSurface geodesic;
+  std::optional<Subdivision> fine;  ///< when not refined
+  Metric fineMetric;                ///< on fine's vertices
+
+  const TriMesh& mesh() const { return geodesic.refined ? geodesic.refinement.mesh : fine->mesh; }
+};
+Expected<FrontSurface> frontSurface(const TriMesh& surface, const Metric& metric, const SurfaceRemeshParams& params,
+                                    Progress progress) {
+  FrontSurface f;
+  Expected<GeodesicSurface> geodesic = prepareGeodesicSurface(surface, metric, params.surface, std::move(progress));
+  if (!geodesic) return geodesic.status();
+  f.geodesic = std::move(*geodesic);
+  if (f.geodesic.refined) return f;
+  Expected<Subdivision> fine = subdivideMidpoint(surface, params.refinement);
+  if (!fine) return fine.status();
+  Expected<Metric> fineMetric = transferMetric(metric, surface, fine->origin);
+  if (!fineMetric) return fineMetric.status();
+  f.fine = std::move(*fine);
+  f.fineMetric = std::move(*fineMetric);
+  return f;
+}
+
+/// Points of the refined surface as points of the oriented input: its vertices' origins. Samples
+/// inside refined faces do not occur (sub-vertex placement is off there); one would be a bug.
+Status originsOnSurface(const GeodesicSurface& geodesic, std::vector<SurfacePoint>& points) {
+  for (SurfacePoint& p : points) {
+    if (p.vertex < 0)
+      return internalError("a sample inside a face of the refined surface (sub-vertex placement is off)");
+    p = geodesic.origin(p.vertex);
+  }
+  return Status::ok();
+}
+
 /// The three stages on one engine: sampling, triangulation of its Voronoi diagram, relaxation.
-Status sampleTriangulateRelax(FastMarcher& marcher, const SurfaceRemeshParams& params, Progress progress,
-                              FpsResult& sampling, DelaunayResult& triangulation, SurfaceRemeshResult& r) {
+/// The relaxation runs on the subdivision (unrefined) or on the oriented input `surface`
+/// (refined: the triangulation's origins are mapped to it first; the refined mesh's faces are
+/// chords, not the surface).
+Status sampleTriangulateRelax(FastMarcher& marcher, const FrontSurface& front, const TriMesh& surface,
+                              const SurfaceRemeshParams& params, Progress progress, FpsResult& sampling,
+                              DelaunayResult& triangulation, SurfaceRemeshResult& r) {
   auto clock = std::chrono::steady_clock::now();
-  Expected<FpsResult> fps = farthestPointSampling(marcher, params.sampling, progress.sub(0.0, 0.65));
+  FpsParams fpsParams = params.sampling;
+  if (front.geodesic.refined) fpsParams.subVertexPlacement = false;  // no exact origin on the input inside a face
+  Expected<FpsResult> fps = farthestPointSampling(marcher, fpsParams, progress.sub(0.0, 0.65));
   if (!fps) return fps.status();
   sampling = std::move(*fps);
   r.times.sampling = lap(clock);
@@ -75,8 +118,11 @@ Status sampleTriangulateRelax(FastMarcher& marcher, const SurfaceRemeshParams& p
   triangulation = std::move(*dual);
   r.times.triangulation = lap(clock);
   if (!progress.report(0.95, "Relaxation")) return cancelled();
+  if (front.geodesic.refined)
+    if (Status s = originsOnSurface(front.geodesic, triangulation.origin); !s) return s;
+  const TriMesh& relaxOn = front.geodesic.refined ? surface : front.fine->mesh;
   Expected<RelaxationResult> relaxed =
-      relaxOnSurface(triangulation.mesh, triangulation.origin, marcher.mesh(), params.relaxation);
+      relaxOnSurface(triangulation.mesh, triangulation.origin, relaxOn, params.relaxation);
   if (!relaxed) return relaxed.status();
   r.relaxation = *relaxed;
   r.times.relaxation = lap(clock);
@@ -93,13 +139,14 @@ Status measureOutput(const TriMesh& input, SurfaceRemeshResult& r, Progress prog
   return Status::ok();
 }
 
-/// Each output vertex's point on the mesh the fronts ran on, as a point of the input: through
-/// the subdivision, then with the orientation flip of its face undone.
-std::vector<SurfacePoint> originsOnInput(const std::vector<SurfacePoint>& onFine, const Subdivision& fine,
+/// Each output vertex's point on the input: through the subdivision when not refined (points on
+/// a refined surface are already on the oriented input), then with the orientation flip of its
+/// face undone.
+std::vector<SurfacePoint> originsOnInput(const std::vector<SurfacePoint>& onFront, const FrontSurface& front,
                                          const TriMesh& surface, const std::vector<char>& flipped) {
-  std::vector<SurfacePoint> origin(onFine.size());
+  std::vector<SurfacePoint> origin(onFront.size());
   for (size_t i = 0; i < origin.size(); ++i) {
-    origin[i] = fine.originOf(surface, onFine[i]);
+    origin[i] = front.fine ? front.fine->originOf(surface, onFront[i]) : onFront[i];
     if (origin[i].face >= 0 && !flipped.empty() && flipped[origin[i].face])
       std::swap(origin[i].bary[1], origin[i].bary[2]);
   }
@@ -126,23 +173,25 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   Expected<OrientedSurface> oriented = orientedSurface(input);
   if (!oriented) return oriented.status();
   const TriMesh& surface = oriented->copy ? *oriented->copy : input;
-  Expected<Subdivision> fine = subdivideMidpoint(surface, params.refinement);
-  if (!fine) return fine.status();
-  Expected<Metric> fineMetric = transferMetric(metric, surface, fine->origin);
-  if (!fineMetric) return fineMetric.status();
+  const double remeshShare = params.measure ? 0.9 : 1.0;
+  Expected<FrontSurface> front = frontSurface(surface, metric, params, progress.sub(0.0, 0.1 * remeshShare));
+  if (!front) return front.status();
   r.times.prepare = lap(clock);
-  FastMarcher marcher(fine->mesh, *fineMetric);  // one engine: the triangulation goes on from the sampling's field
+  // One engine: the triangulation goes on from the sampling's field.
+  FastMarcher marcher =
+      front->geodesic.refined ? front->geodesic.makeMarcher() : FastMarcher(front->fine->mesh, front->fineMetric);
   r.times.engine = lap(clock);
 
   FpsResult sampling;
   DelaunayResult dual;
-  const double remeshShare = params.measure ? 0.9 : 1.0;
-  if (Status s = sampleTriangulateRelax(marcher, params, progress.sub(0.0, remeshShare), sampling, dual, r); !s)
-    return s;
+  const Progress remeshing = progress.sub(front->geodesic.refined ? 0.1 * remeshShare : 0.0, remeshShare);
+  if (Status s = sampleTriangulateRelax(marcher, *front, surface, params, remeshing, sampling, dual, r); !s) return s;
   r.mesh = std::move(dual.mesh);
-  r.origin = originsOnInput(dual.origin, *fine, surface, oriented->flipped);
+  r.origin = originsOnInput(dual.origin, *front, surface, oriented->flipped);
   r.cell.assign(dual.cell.begin(), dual.cell.begin() + input.vertexCount());  // input vertices come first
-  r.frontVertices = fine->mesh.vertexCount();
+  r.frontVertices = front->mesh().vertexCount();
+  r.refinedSurface = front->geodesic.refined;
+  r.refinedPoints = front->geodesic.insertedPoints();
   r.sampledCount = static_cast<int>(sampling.samples.size());
   r.coveringRadius = sampling.coveringRadius;
   r.addedSamples = dual.addedSamples;

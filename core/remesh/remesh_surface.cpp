@@ -32,6 +32,13 @@ Status checkRemeshInput(const TriMesh& input, const SurfaceRemeshParams& params)
   if (params.refinement < 0 || params.refinement > SurfaceRemeshParams::kMaxRefinement)
     return invalidInput("Refinement must be 0 to " + std::to_string(SurfaceRemeshParams::kMaxRefinement) + ", got " +
                         std::to_string(params.refinement));
+  // The target is bounded by the input's vertices in faces, also when the fronts run on a refined
+  // surface with more vertices (the output never has more vertices than the input offers).
+  int usable = 0;
+  for (int v = 0; v < input.vertexCount(); ++v) usable += input.valence(v) > 0;
+  if (params.sampling.targetCount > usable)
+    return invalidInput("cannot place " + std::to_string(params.sampling.targetCount) + " samples on " +
+                        std::to_string(usable) + " vertices");
   const int rounds = params.relaxation.iterations;
   if (rounds < 0 || rounds > SurfaceRemeshParams::kMaxRelaxationRounds)
     return invalidInput("Relaxation must be 0 to " + std::to_string(SurfaceRemeshParams::kMaxRelaxationRounds) +

@@ -78,10 +78,9 @@ TEST_P(RemeshCad, DefaultsKeepTopologyCountAndGiveNoSelfIntersections) {
       "%s: %d input vertices, %d asked, %d got (%d added, %d dropped), genus %d, %d loops, %d components; %zu "
       "self-intersecting pairs; smallest angle %.2f deg, %.1f %% under 30 deg; %s (%d inserted points); %.3f s "
       "(prepare %.3f)\n",
-      cad.name.c_str(), input.vertexCount(), target, out.vertexCount(), r.addedSamples, r.droppedSamples,
-      rc.genusSum, rc.boundaryLoops, rc.components, crossing->size(), angles.smallestDegrees,
-      100 * angles.shareBelow30, r.refinedSurface ? "refined" : "not refined", r.refinedPoints, seconds,
-      r.times.prepare);
+      cad.name.c_str(), input.vertexCount(), target, out.vertexCount(), r.addedSamples, r.droppedSamples, rc.genusSum,
+      rc.boundaryLoops, rc.components, crossing->size(), angles.smallestDegrees, 100 * angles.shareBelow30,
+      r.refinedSurface ? "refined" : "not refined", r.refinedPoints, seconds, r.times.prepare);
   EXPECT_EQ(in.genusSum, cad.genus);
   test::expectValidWithTopologyOf(rc, in);
   EXPECT_LE(std::abs(out.vertexCount() - target), 0.1 * target);
@@ -94,9 +93,8 @@ TEST_P(RemeshCad, DefaultsKeepTopologyCountAndGiveNoSelfIntersections) {
   for (int v = 0; v < input.vertexCount(); ++v) ASSERT_TRUE(r.cell[v] >= 0 && r.cell[v] < out.vertexCount());
 }
 
-INSTANTIATE_TEST_SUITE_P(Meshes, RemeshCad, ::testing::Range(0, 4), [](const ::testing::TestParamInfo<int>& p) {
-  return test::cadMeshes()[p.param].name;
-});
+INSTANTIATE_TEST_SUITE_P(Meshes, RemeshCad, ::testing::Range(0, 4),
+                         [](const ::testing::TestParamInfo<int>& p) { return test::cadMeshes()[p.param].name; });
 
 }  // namespace
 }  // namespace gr

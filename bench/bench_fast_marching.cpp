@@ -23,9 +23,16 @@
 //   Fps1000_*   a whole sampling of 1000 points from vertex 0, each at the argmax of the current
 //               field (linear scan, the same for every method), updated incrementally.
 //
+//   Ours_geodesicDistance     gr::geodesicDistance(), what the Fast marching filter calls: the
+//                             triangulation test, the intrinsic Delaunay refinement where it says
+//                             so, the engine on the refined surface, the values at the input's
+//                             vertices (counters: refined, inserted points)
+//
 // Meshes: fandisk, bunny00, armadillo (libcgal-demo data) and armadillo subdivided 1-to-4 three
 // times (1,664,002 vertices), built once per process on first use; a filter that excludes a mesh
-// never builds it. Select families with --benchmark_filter, e.g. '^Ours', '/bunny00', '^FpsStep'.
+// never builds it. Sliver meshes (issue 17), with the single-source families of ours and vcglib
+// only: cheese.off and the four CAD-like meshes of tests/support/cad_meshes.h (cad_gear,
+// cad_hole_plate, cad_cylinder, cad_bracket). Select families with --benchmark_filter, e.g. '^Ours', '/bunny00', '^FpsStep'.
 // Counters: vertices/s (reached vertices per second), reached, vertices, max_dist (sanity check
 // that every method computed a field; accuracy is tested in tests/, not here).
 
@@ -34,6 +41,7 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -42,9 +50,11 @@
 
 #include "bench/bench_support.h"
 #include "core/geodesic/fast_marching.h"
+#include "core/geodesic/geodesic_surface.h"
 #include "core/geodesic/metric.h"
 #include "core/mesh/tri_mesh.h"
 #include "tests/oracles/geodesic_oracles.h"
+#include "tests/support/cad_meshes.h"
 
 namespace {
 
@@ -68,6 +78,15 @@ const MeshSpec kMeshes[] = {
 };
 bool isLarge(const MeshSpec& s) { return s.subdivisions >= 3; }
 
+/// Meshes the triangulation test refines; "cad:<name>" is built by test::cadMeshes().
+const MeshSpec kSliverMeshes[] = {
+    {"cheese", "cheese.off", 0},
+    {"cad_gear", "cad:cad_gear", 0},
+    {"cad_hole_plate", "cad:cad_hole_plate", 0},
+    {"cad_cylinder", "cad:cad_cylinder", 0},
+    {"cad_bracket", "cad:cad_bracket", 0},
+};
+
 /// A mesh and, built on first use, each competitor's object for it (never timed): the competitors
 /// are gr_oracles' (tests/oracles/geodesic_oracles.h), the ones the accuracy tests use.
 struct BenchMesh {
@@ -82,7 +101,15 @@ struct BenchMesh {
 
 /// The mesh of `spec`, loaded (and subdivided) once per process; nullptr after SkipWithError.
 BenchMesh* getMesh(benchmark::State& state, const MeshSpec& spec) {
-  return gr::bench::cachedMesh<BenchMesh>(state, spec);
+  const std::string file = spec.file;
+  if (file.rfind("cad:", 0) != 0) return gr::bench::cachedMesh<BenchMesh>(state, spec);
+  static std::map<std::string, std::unique_ptr<BenchMesh>> cad;
+  std::unique_ptr<BenchMesh>& slot = cad[spec.name];
+  if (!slot)
+    for (gr::test::CadMesh& m : gr::test::cadMeshes())
+      if ("cad:" + m.name == file) slot = std::make_unique<BenchMesh>(std::move(m.mesh));
+  if (!slot) state.SkipWithError(("no CAD mesh " + file).c_str());
+  return slot.get();
 }
 
 gr::oracle::VcgGeodesic<float>& vcgGeodesic(BenchMesh& bm) {
@@ -200,6 +227,28 @@ void BM_OursOneShot(benchmark::State& state, const MeshSpec& spec) {
     maxDist = r->maxDistance;
   }
   setCounters(state, *bm, reached, maxDist);
+}
+
+void BM_OursGeodesicDistance(benchmark::State& state, const MeshSpec& spec) {
+  BenchMesh* bm = getMesh(state, spec);
+  if (!bm) return;
+  const std::vector<int> sources{kSource};
+  double reached = 0, maxDist = 0, inserted = 0, refined = 0;
+  for (auto _ : state) {
+    gr::Expected<gr::GeodesicDistanceResult> r = gr::geodesicDistance(bm->tri, {}, sources);
+    if (!r) {
+      state.SkipWithError(r.status().message.c_str());
+      return;
+    }
+    benchmark::DoNotOptimize(r->field.distance.data());
+    reached = r->field.reachedCount();
+    maxDist = r->field.maxDistance;
+    inserted = r->insertedPoints;
+    refined = r->refined;
+  }
+  setCounters(state, *bm, reached, maxDist);
+  state.counters["inserted"] = inserted;
+  state.counters["refined"] = refined;
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -519,6 +568,7 @@ void registerAll() {
     const int slow = isLarge(spec) ? 1 : 0;  // a single run on the 1M mesh
     add("Ours_FastMarcher", BM_OursFastMarcher, spec);
     add("Ours_fastMarching_oneshot", BM_OursOneShot, spec);
+    add("Ours_geodesicDistance", BM_OursGeodesicDistance, spec, slow);
     add("Dijkstra", BM_Dijkstra, spec);
     add("Vcg_Geodesic", BM_VcgGeodesic, spec, slow);
     add("CgalHeat_BuildQuery", BM_CgalHeatBuildQuery<HeatVariant::Direct>, spec, slow);
@@ -539,6 +589,12 @@ void registerAll() {
       add("Fps1000_Dijkstra_Incremental", BM_Fps1000DijkstraIncremental, spec);
       add("Fps1000_ArgmaxScans", BM_Fps1000ArgmaxScans, spec);
     }
+  }
+  for (const MeshSpec& spec : kSliverMeshes) {
+    add("Ours_FastMarcher", BM_OursFastMarcher, spec);
+    add("Ours_fastMarching_oneshot", BM_OursOneShot, spec);
+    add("Ours_geodesicDistance", BM_OursGeodesicDistance, spec);
+    add("Vcg_Geodesic", BM_VcgGeodesic, spec);
   }
 }
 

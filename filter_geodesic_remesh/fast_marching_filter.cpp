@@ -4,7 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include "core/geodesic/fast_marching.h"
+#include "core/geodesic/geodesic_surface.h"
+#include "core/geodesic/triangulation_quality.h"
 #include "filter_geodesic_remesh/filter_support.h"
 #include "filter_geodesic_remesh/parameter_names.h"
 #include "vcg_adapters/cmesho_adapter.h"
@@ -21,6 +22,28 @@ Expected<std::vector<double>> speedFromParameters(const MeshModel& mm, const ada
         "UseQualityAsSpeed is on, but the mesh has no per-vertex quality: compute one first "
         "(any filter of the Quality Measure and Computations menu)");
   return adapters::vertexQuality(mm.cm, view);
+}
+
+/// The refinement's log: one line on the triangulation fronts ran on, then what the refinement
+/// could not do (skipped, faces left below the angle bound, budget spent), as warnings.
+void logTriangulation(const GeodesicDistanceResult& r, const GeodesicSurfaceParams& surface, FilterContext& ctx) {
+  if (r.refined)
+    ctx.log("Surface refined for the fronts (intrinsic Delaunay, angles >= " +
+            formatNumber(surface.intrinsic.minAngleDegrees) + " deg, edges <= " +
+            formatNumber(100.0 * surface.maxEdgeFraction) + "% of the diagonal): " + std::to_string(r.insertedPoints) +
+            " points inserted; input " + describe(r.inputQuality));
+  else if (surface.refinement == SurfaceRefinement::Off)
+    ctx.log("Refinement Off: the fronts ran on the triangulation as it is (" + describe(r.inputQuality) + ")");
+  else if (r.refinementSkipped.empty())
+    ctx.log("Triangulation fine as it is (" + describe(r.inputQuality) + "): not refined");
+  if (!r.refinementSkipped.empty())
+    ctx.warn("the triangulation is poor but could not be refined (" + r.refinementSkipped +
+             "); the fronts ran on it as it is and may be less accurate");
+  if (r.facesBelowMinAngle > 0)
+    ctx.warn(std::to_string(r.facesBelowMinAngle) + " faces of the refined surface stayed below " +
+             formatNumber(surface.intrinsic.minAngleDegrees) + " deg");
+  if (r.budgetExhausted)
+    ctx.warn("the refinement stopped at its budget of inserted points; some triangles stayed poor");
 }
 
 }  // namespace
@@ -40,6 +63,17 @@ void declareFastMarching(const MeshModel& mesh, RichParameterList& params) {
                            "Color by",
                            "Distance (default): a red-to-blue ramp over the distance. Voronoi cell: one color per "
                            "source, each vertex colored by its nearest source (geodesic Voronoi diagram)."));
+  params.addParam(RichEnum(
+      param::kSurfaceRefinement, int(GeodesicSurfaceParams{}.refinement),
+      QStringList() << "Auto"
+                    << "On"
+                    << "Off",
+      "Refinement",
+      "Auto (default): where the triangles are poor (slivers, caps: CAD exports) or the mesh is coarse, the fronts "
+      "run on an intrinsic Delaunay refinement of the same surface (every angle >= 25 deg, edges <= 2% of the "
+      "bounding-box diagonal), which fast marching needs to be accurate; well-shaped meshes are used as they are. "
+      "On / Off: always / never refine. The values are read at the mesh's own vertices: nothing is added to the "
+      "mesh."));
 }
 
 Status applyFastMarching(MeshDocument& doc, const RichParameterList& params, FilterContext& ctx) {
@@ -64,18 +98,28 @@ Status applyFastMarching(MeshDocument& doc, const RichParameterList& params, Fil
   Expected<std::vector<double>> speed = speedFromParameters(*mm, view, useQuality);
   if (!speed) return speed.status();
   const double maxDistance = params.getAbsPerc(param::kMaxDistance);
-  FastMarchingParams fmParams;
+  GeodesicDistanceParams gdParams;
+  FastMarchingParams& fmParams = gdParams.marching;
   if (maxDistance != 0.0) fmParams.maxDistance = maxDistance;  // 0 = no limit; the core checks the rest
   const int colorBy = params.getEnum(param::kColorBy);
   if (colorBy != int(ColorBy::Distance) && colorBy != int(ColorBy::VoronoiCell))
     return invalidInput("ColorBy must be 0 (Distance) or 1 (Voronoi cell), got " + std::to_string(colorBy));
+  const int refinement = params.getEnum(param::kSurfaceRefinement);
+  if (refinement < int(SurfaceRefinement::Auto) || refinement > int(SurfaceRefinement::Off))
+    return invalidInput("Refinement must be 0 (Auto), 1 (On) or 2 (Off), got " + std::to_string(refinement));
+  gdParams.surface.refinement = SurfaceRefinement(refinement);
 
-  Expected<FastMarchingResult> result = fastMarchingWithSpeed(view.mesh, *speed, sources, fmParams, ctx.progress);
-  if (!result) {
-    if (useQuality && result.status().code == StatusCode::InvalidInput)
-      return invalidInput("vertex quality used as speed: " + result.status().message);
-    return result.status();
+  Expected<GeodesicDistanceResult> computed = geodesicDistance(view.mesh, *speed, sources, gdParams, ctx.progress);
+  if (!computed) {
+    const Status& failed = computed.status();
+    if (failed.code == StatusCode::NonManifold && refinement == int(SurfaceRefinement::On))
+      return nonManifold("Refinement is On: " + failed.message +
+                         ". Choose Auto or Off to run the fronts on the mesh as it is");
+    if (useQuality && failed.code == StatusCode::InvalidInput)
+      return invalidInput("vertex quality used as speed: " + failed.message);
+    return failed;
   }
+  const FastMarchingResult* result = &computed->field;
 
   // ...then commit.
   adapters::writeVertexQuality(m, view, result->distance, -1.0);
@@ -99,6 +143,7 @@ Status applyFastMarching(MeshDocument& doc, const RichParameterList& params, Fil
   if (topology.nonManifoldVertices > 0)
     ctx.warn("the mesh has " + std::to_string(topology.nonManifoldVertices) +
              " non-manifold vertices; fronts cross them through the vertex only");
+  logTriangulation(*computed, gdParams.surface, ctx);
   ctx.log("Time: " + formatDuration(ms));
   return Status::ok();
 }

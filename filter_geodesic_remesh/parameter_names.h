@@ -5,6 +5,8 @@ namespace gr::filters::param {
 
 // Geodesic Distance: Fast Marching from Selected Vertices
 constexpr const char *kUseQualityAsSpeed = "UseQualityAsSpeed", *kMaxDistance = "MaxDistance", *kColorBy = "ColorBy";
+// Its surface refinement (a RichEnum Auto/On/Off); the same name as the uniform filter's RichInt below
+constexpr const char* kSurfaceRefinement = "Refinement";
 
 // Both remeshing filters: the sampling
 constexpr const char *kTargetVertices = "TargetVertices", *kSpacing = "Spacing", *kSeed = "Seed",

@@ -24,6 +24,8 @@ FAMILIES = OrderedDict([
     ("Ours_FastMarcher", ("**Ours**: FastMarcher, reused (reset + propagate)", "Ours_FastMarcher", "field")),
     ("Ours_fastMarching_oneshot", ("Ours: fastMarching() one-shot (engine built per call)", "Ours_FastMarcher",
                                    "field")),
+    ("Ours_geodesicDistance", ("Ours: geodesicDistance() (the filter's call: test, refinement where needed, "
+                               "propagation)", "Ours_FastMarcher", "field")),
     ("Dijkstra", ("Dijkstra along edges (baseline)", "Ours_FastMarcher", "field")),
     ("Vcg_Geodesic", ("vcglib tri::Geodesic::Compute (MeshLab)", "Ours_FastMarcher", "field")),
     ("CgalHeat_BuildQuery", ("CGAL heat, Direct: construction + 1 query", "Ours_FastMarcher", "field")),

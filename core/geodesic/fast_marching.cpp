@@ -214,6 +214,26 @@ void FastMarcher::setSaddleSeeding(bool on, bool boundaryOnly) {
   }
 }
 
+void FastMarcher::setPathEdges(const std::vector<std::array<int, 2>>& edges, const std::vector<double>& lengths) {
+  pathBegin_.clear();
+  pathEdges_.clear();
+  if (edges.empty()) return;
+  const int nv = mesh_.vertexCount();
+  pathBegin_.assign(nv + 1, 0);
+  for (const auto& e : edges) {
+    ++pathBegin_[slotOf_[e[0]] + 1];
+    ++pathBegin_[slotOf_[e[1]] + 1];
+  }
+  for (int i = 0; i < nv; ++i) pathBegin_[i + 1] += pathBegin_[i];
+  pathEdges_.resize(pathBegin_[nv]);
+  std::vector<int> fill(pathBegin_.begin(), pathBegin_.end() - 1);
+  for (size_t k = 0; k < edges.size(); ++k) {
+    const int a = slotOf_[edges[k][0]], b = slotOf_[edges[k][1]];
+    pathEdges_[fill[a]++] = {b, lengths[k]};
+    pathEdges_[fill[b]++] = {a, lengths[k]};
+  }
+}
+
 void FastMarcher::setChordBound(bool on) {
   chordPosition_.clear();
   if (!on || !uniform_) return;
@@ -226,13 +246,6 @@ void FastMarcher::noteSourceOfCell(int cell, int slot) {
   if (cell >= static_cast<int>(sourceSlotOfCell_.size())) sourceSlotOfCell_.resize(cell + 1, -2);
   int& s = sourceSlotOfCell_[cell];
   s = s == -2 || s == slot ? slot : -1;
-}
-
-double FastMarcher::chordBound(int v) const {
-  const int cell = node_[v].cell;
-  if (cell < 0 || cell >= static_cast<int>(sourceSlotOfCell_.size())) return 0.0;
-  const int s = sourceSlotOfCell_[cell];
-  return s < 0 ? 0.0 : (chordPosition_[v] - chordPosition_[s]).norm();
 }
 
 Status FastMarcher::addSource(int v, int cell) {
@@ -414,13 +427,11 @@ Status FastMarcher::propagate(const FastMarchingParams& params, Progress progres
   while (!heap_.empty()) {
     if (heap_.top().key > params.maxDistance) break;  // left in the heap: endRun() clears it
     const int v = heap_.pop();
-    if (!chordPosition_.empty()) {
-      const double bound = chordBound(v);
-      if (node_[v].u < bound) {  // back into the heap at the bound
-        node_[v].u = bound;
-        heap_.pushOrDecrease(v, bound);
-        continue;
-      }
+    if (!chordPosition_.empty() && belowChord(v)) {  // back into the heap at the bound
+      const double bound = (chordPosition_[v] - chordPosition_[sourceSlotOfCell_[node_[v].cell]]).norm();
+      node_[v].u = bound;
+      heap_.pushOrDecrease(v, bound);
+      continue;
     }
     if (!heap_.empty()) {
       // The star of the vertex now on top, most often the next one scattered: its records
@@ -438,6 +449,11 @@ Status FastMarcher::propagate(const FastMarchingParams& params, Progress progres
       }
     }
     if (!saddle_.empty() && saddle_[v]) seedAcrossStar(v, node_[v].cell);
+    if (!pathBegin_.empty())
+      for (int k = pathBegin_[v]; k < pathBegin_[v + 1]; ++k) {
+        const PathEdge& e = pathEdges_[k];
+        relax(e.to, node_[v].u + 0.5 * (P_[v] + P_[e.to]) * e.length, node_[v].cell);
+      }
     if (uniform_) {
       scatter<true>(v);
     } else {

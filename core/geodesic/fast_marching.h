@@ -93,6 +93,13 @@ class FastMarcher {
   /// a vertex found below its bound goes back into the heap at the bound, so the acceptance
   /// order stays monotone. O(1) per accepted vertex (a square root); O(V) to turn on.
   void setChordBound(bool on);
+  /// Path edges (none by default): straight segments on the surface that are not (or no longer)
+  /// edges of this mesh, each with its length; an accepted end offers the other end U plus the
+  /// segment's cost (mean P of the ends times the length), an upper bound that is exact along
+  /// the segment. For a refined surface: the input's edges, which the intrinsic flips may have
+  /// removed, and along which the exact geodesic runs on polygonal meshes (a star-shaped plate:
+  /// its reflex corners; a cube: its edges). O(edges) to set; O(1) per edge per run.
+  void setPathEdges(const std::vector<std::array<int, 2>>& edges, const std::vector<double>& lengths);
   /// Runs the front from the sources added since the last run, entering only vertices it
   /// improves. Cancelled if `progress` says so (the field is then partial).
   Status propagate(const FastMarchingParams& params = {}, Progress progress = {});
@@ -149,8 +156,16 @@ class FastMarcher {
   /// Records where cell `cell`'s source is for the chord bound (a vertex's slot, or -1 for a
   /// point inside a face: that cell is not bounded).
   void noteSourceOfCell(int cell, int slot);
-  /// The chord bound of slot v in its cell (0 when the cell is not bounded).
-  double chordBound(int v) const;
+  /// Whether slot v's value is below its chord bound (false when its cell is not bounded).
+  /// Squared lengths: no square root unless it is; a relative slack of 1e-12 so that a value set
+  /// to the bound (a rounded square root) is never found below it again.
+  bool belowChord(int v) const {
+    const int cell = node_[v].cell;
+    if (cell < 0 || cell >= static_cast<int>(sourceSlotOfCell_.size())) return false;
+    const int s = sourceSlotOfCell_[cell];
+    const double u = node_[v].u;
+    return s >= 0 && u * u < (chordPosition_[v] - chordPosition_[s]).squaredNorm() * (1.0 - 1e-12);
+  }
 
   /// The constructors' common body; `cornerLength` is null for lengths from the positions.
   FastMarcher(const TriMesh& mesh, const std::vector<double>* cornerLength, const Metric& metric);
@@ -180,7 +195,13 @@ class FastMarcher {
   std::vector<Saved> saved_;
   IndexedHeap heap_;
   std::vector<std::pair<Vec2, Vec2>> seedChain_;  ///< edges crossed by the current unfolding
-  std::vector<char> saddle_;         ///< per slot, 1 if saddle seeding restarts the front there; empty = off
+  std::vector<char> saddle_;    ///< per slot, 1 if saddle seeding restarts the front there; empty = off
+  std::vector<int> pathBegin_;  ///< per slot, into pathEdges_ (CSR); empty = no path edges
+  struct PathEdge {
+    int to;  ///< slot
+    double length;
+  };
+  std::vector<PathEdge> pathEdges_;
   std::vector<Vec3> chordPosition_;  ///< per slot, for the chord bound; empty = off
   /// Per cell, the slot of its one vertex source; -1 not bounded, -2 no source yet.
   std::vector<int> sourceSlotOfCell_;

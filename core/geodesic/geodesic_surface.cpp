@@ -52,6 +52,7 @@ FastMarcher GeodesicSurface::makeMarcher() const {
     return marcher;
   }
   FastMarcher marcher(refinement.mesh, refinement.cornerLength, metric);
+  marcher.setPathEdges(inputEdges, inputEdgeLength);
   marcher.setSaddleSeeding(true);
   marcher.setChordBound(true);
   return marcher;
@@ -92,6 +93,13 @@ Expected<GeodesicSurface> prepareGeodesicSurface(const TriMesh& input, const Met
   if (!transferred) return transferred.status();
   s.refined = true;
   s.refinement = std::move(*refined);
+  for (int c = 0; c < 3 * input.faceCount(); ++c) {  // each input edge once
+    const int a = input.vertex(TriMesh::next(c)), b = input.vertex(TriMesh::prev(c));
+    const int opposite = input.oppositeCorner[c];
+    if (opposite >= 0 && opposite < c) continue;
+    s.inputEdges.push_back({a, b});
+    s.inputEdgeLength.push_back((input.positions[a] - input.positions[b]).norm());
+  }
   s.metric = std::move(*transferred);
   return s;
 }
@@ -121,6 +129,7 @@ Expected<GeodesicDistanceResult> geodesicDistance(const TriMesh& mesh, const std
   r.refined = surface->refined;
   r.insertedPoints = surface->insertedPoints();
   r.facesBelowMinAngle = surface->refined ? surface->refinement.facesBelowMinAngle : 0;
+  r.budgetExhausted = surface->refined && surface->refinement.budgetExhausted;
   r.inputQuality = surface->inputQuality;
   r.refinementSkipped = surface->refinementSkipped;
   return r;

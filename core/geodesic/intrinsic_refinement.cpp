@@ -102,6 +102,7 @@ class Refiner {
   Refiner(IntrinsicTriangulation& tri, const IntrinsicRefinementParams& params, double meanEdge, Progress& progress)
       : tri_(tri), progress_(progress) {
     minAngle_ = params.minAngleDegrees * kPi / 180.0;
+    minTanHalfSquared_ = std::tan(0.5 * minAngle_) * std::tan(0.5 * minAngle_);
     maxLength_ = params.maxEdgeLength;
     tinyRadius_ = kTinyCircumradius * meanEdge;
     budget_ = params.maxInsertions >= 0 ? params.maxInsertions : 10 * tri.inputVertexCount() + 1000;
@@ -133,6 +134,7 @@ class Refiner {
   IntrinsicTriangulation& tri_;
   Progress& progress_;
   double minAngle_ = 0.0, maxLength_ = kUnbounded, tinyRadius_ = 0.0;
+  double minTanHalfSquared_ = 0.0;  ///< tan^2(minAngle_ / 2): the same test as the angle, cheaper
   int budget_ = 0, insertions_ = 0;
   bool keepSimplicial_ = false, exhausted_ = false;
   std::priority_queue<Entry> queue_;
@@ -157,7 +159,7 @@ bool Refiner::needsRefinement(int f) const {
     if (v.angleSum < kNeedleAngleSum) needle = true;
     // A corner whose two sides are one edge (a vertex of degree one) cannot be split either.
     const bool loopCorner = m.he[h].twin == SignpostMesh::prev(h);
-    if (!loopCorner && m.cornerAngle(h) < minAngle_) smallAngle = true;
+    if (!loopCorner && m.cornerTanHalfSquared(h) < minTanHalfSquared_) smallAngle = true;
   }
   if (!tooLong && (!smallAngle || needle)) return false;
   return circumradius(f) >= tinyRadius_;

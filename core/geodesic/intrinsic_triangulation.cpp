@@ -146,25 +146,33 @@ bool IntrinsicTriangulation::isNonSimplicial(int h) const {
 }
 
 std::vector<int> IntrinsicTriangulation::nonSimplicialEdges() const {
+  // Per vertex v, its neighbours w around it, with a stamp per w instead of a sorted ring: a
+  // self-edge (w == v) is reported from each of its halfedges; of the k > 1 edges joining v to
+  // the same w (v < w), every one but the one with the smallest halfedge. O(V + F).
   std::vector<int> out;
-  std::vector<std::pair<int, int>> ring;  // (neighbour, halfedge of the edge)
-  for (int v = 0; v < mesh_.vertexCount(); ++v) {
+  const int nv = mesh_.vertexCount();
+  std::vector<int> stampOf(nv, -1), smallestHalfedge(nv, -1);
+  const auto meet = [&](int v, int w, int h) {
+    if (w == v) {
+      out.push_back(h);
+    } else if (stampOf[w] != v) {
+      stampOf[w] = v;
+      smallestHalfedge[w] = h;
+    } else if (v < w) {
+      out.push_back(std::max(smallestHalfedge[w], h));
+      smallestHalfedge[w] = std::min(smallestHalfedge[w], h);
+    }
+  };
+  for (int v = 0; v < nv; ++v) {
     const int first = mesh_.vert[v].halfedge;
     if (first < 0) continue;
-    ring.clear();
     int h = first, guard = 3 * mesh_.faceCount();
     do {
-      ring.emplace_back(mesh_.tip(h), h);
+      meet(v, mesh_.tip(h), h);
       const int in = SignpostMesh::prev(h);
-      if (mesh_.he[in].twin < 0) ring.emplace_back(mesh_.tail(in), in);
+      if (mesh_.he[in].twin < 0) meet(v, mesh_.tail(in), in);
       h = mesh_.nextAround(h);
     } while (h >= 0 && h != first && --guard > 0);
-    std::sort(ring.begin(), ring.end());
-    for (size_t i = 0; i < ring.size(); ++i) {
-      const int w = ring[i].first;
-      const bool repeat = i > 0 && ring[i - 1].first == w;
-      if (w == v || (repeat && v < w)) out.push_back(ring[i].second);
-    }
   }
   // One halfedge per edge (a self-edge is met from both of its halfedges).
   for (int& h : out) h = mesh_.he[h].twin >= 0 ? std::min(h, mesh_.he[h].twin) : h;
@@ -179,6 +187,10 @@ std::vector<int> IntrinsicTriangulation::nonSimplicialEdges() const {
 bool IntrinsicTriangulation::isDelaunay(int h, double toleranceRadians) const {
   const int t = mesh_.he[h].twin;
   if (t < 0) return true;
+  // Half-angles x, y in [0, pi/2]: x + y <= pi/2 exactly when tan x tan y <= 1 (no arc tangent,
+  // the common case); otherwise the angles themselves, against the tolerance.
+  if (mesh_.cornerTanHalfSquared(SignpostMesh::prev(h)) * mesh_.cornerTanHalfSquared(SignpostMesh::prev(t)) <= 1.0)
+    return true;
   return mesh_.cornerAngle(SignpostMesh::prev(h)) + mesh_.cornerAngle(SignpostMesh::prev(t)) <= kPi + toleranceRadians;
 }
 

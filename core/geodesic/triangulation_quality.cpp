@@ -36,27 +36,34 @@ TriangulationQuality assessTriangulation(const TriMesh& mesh) {
   if (q.faces == 0) return q;
   q.diagonal = boundingBoxDiagonal(mesh);
   const double longEdge2 = kLongEdgeFraction * kLongEdgeFraction * q.diagonal * q.diagonal;
-  double smallest = kPi, largest = 0.0;
+  // Angles compared through their signed squared cosines, sign(c) c^2 (increasing with c, so
+  // decreasing with the angle): no square root or arc cosine per corner.
+  const auto signedSquare = [](double c) { return c < 0.0 ? -c * c : c * c; };
+  const double sliverBound = signedSquare(std::cos(kSliverAngleDegrees * kPi / 180.0));
+  const double capBound = signedSquare(std::cos(kCapAngleDegrees * kPi / 180.0));
+  double largest = -1.0, smallest = 1.0;  // of sign(c) c^2 over all corners
   int slivers = 0, caps = 0, longFaces = 0;
   for (const Tri& t : mesh.triangles) {
-    double lo = kPi, hi = 0.0;
-    bool hasLongEdge = false;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 u = mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]];
-      const Vec3 w = mesh.positions[t[(k + 2) % 3]] - mesh.positions[t[k]];
-      const double a = std::atan2(u.cross(w).norm(), u.dot(w));
-      lo = std::min(lo, a);
-      hi = std::max(hi, a);
-      hasLongEdge = hasLongEdge || u.squaredNorm() > longEdge2;
+    const Vec3 e[3] = {mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[1]],
+                       mesh.positions[t[0]] - mesh.positions[t[2]]};
+    const double n2[3] = {e[0].squaredNorm(), e[1].squaredNorm(), e[2].squaredNorm()};
+    double hi = -1.0, lo = 1.0;
+    for (int k = 0; k < 3; ++k) {  // the corner at t[k], between e[k] and -e[k + 2]
+      const double len2 = n2[k] * n2[(k + 2) % 3];
+      const double dot = -e[k].dot(e[(k + 2) % 3]);
+      const double c2 = len2 > 0.0 ? std::clamp((dot < 0.0 ? -dot * dot : dot * dot) / len2, -1.0, 1.0) : 1.0;
+      hi = std::max(hi, c2);  // a zero-length side: angle 0
+      lo = std::min(lo, c2);
     }
-    longFaces += hasLongEdge;
-    smallest = std::min(smallest, lo);
     largest = std::max(largest, hi);
-    slivers += lo < kSliverAngleDegrees * kPi / 180.0;
-    caps += hi > kCapAngleDegrees * kPi / 180.0;
+    smallest = std::min(smallest, lo);
+    slivers += hi > sliverBound;
+    caps += lo < capBound;
+    longFaces += std::max({n2[0], n2[1], n2[2]}) > longEdge2;
   }
-  q.smallestAngleDegrees = smallest * 180.0 / kPi;
-  q.largestAngleDegrees = largest * 180.0 / kPi;
+  const auto angleOf = [](double c2) { return std::acos(c2 < 0.0 ? -std::sqrt(-c2) : std::sqrt(c2)) * 180.0 / kPi; };
+  q.smallestAngleDegrees = angleOf(largest);
+  q.largestAngleDegrees = angleOf(smallest);
   q.sliverShare = static_cast<double>(slivers) / q.faces;
   q.capShare = static_cast<double>(caps) / q.faces;
   q.longEdgeShare = static_cast<double>(longFaces) / q.faces;
@@ -68,8 +75,7 @@ TriangulationQuality assessTriangulation(const TriMesh& mesh) {
 std::string describe(const TriangulationQuality& q) {
   return "slivers " + formatNumber(100.0 * q.sliverShare, "%.2f") + "%, caps " +
          formatNumber(100.0 * q.capShare, "%.2f") + "%, long edges " + formatNumber(100.0 * q.longEdgeShare, "%.2f") +
-         "%, smallest angle " + formatNumber(q.smallestAngleDegrees, "%.3g") +
-         " deg: " + (q.needsRefinement ? "refine" : "fine as it is");
+         "%, smallest angle " + formatNumber(q.smallestAngleDegrees, "%.3g") + " deg";
 }
 
 }  // namespace gr

@@ -37,7 +37,7 @@ struct TriangulationQuality {
 /// The figures above, from the 3D positions (a zero-length edge gives its corners angle 0).
 TriangulationQuality assessTriangulation(const TriMesh& mesh);
 
-/// One line for a log: "slivers 74.00%, caps 2.90%, long edges 0.00%, smallest angle 0.22 deg: refine".
+/// The figures for a log: "slivers 74.00%, caps 2.90%, long edges 0.00%, smallest angle 0.22 deg".
 std::string describe(const TriangulationQuality& quality);
 
 }  // namespace gr

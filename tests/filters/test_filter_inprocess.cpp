@@ -21,11 +21,16 @@
 
 #include "core/base/math.h"
 #include "core/geodesic/fast_marching.h"
+#include "core/geodesic/geodesic_surface.h"
+#include "core/measure/evaluation.h"
 #include "core/mesh/vcg_mesh.h"
 #include "core/remesh/remesh_surface.h"
+#include "filter_geodesic_remesh/fast_marching_filter.h"
 #include "filter_geodesic_remesh/filter_geodesic_remesh.h"
 #include "filter_geodesic_remesh/filter_support.h"
 #include "filter_geodesic_remesh/parameter_names.h"
+#include "tests/oracles/geodesic_oracles.h"
+#include "tests/support/cad_meshes.h"
 #include "tests/support/test_support.h"
 #include "vcg_adapters/cmesho_adapter.h"
 
@@ -151,11 +156,31 @@ TEST_F(FilterInProcess, FandiskMatchesCoreAndMarksQualityAndColor) {
   std::vector<Vec3> asFloat;
   for (const auto& v : mm->cm.vert) asFloat.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
   const TriMesh same = std::move(buildTriMesh(asFloat, fandisk.triangles)).value();
-  const auto core = fastMarching(same, Metric::uniform(), {0, 3000});
+  // The core function the filter calls: geodesicDistance (here on the mesh as it is: fandisk's
+  // triangles are well shaped, the log says so).
+  const auto core = geodesicDistance(same, {}, {0, 3000});
   ASSERT_TRUE(core);
+  ASSERT_FALSE(core->refined);
   for (int v = 0; v < same.vertexCount(); ++v)
-    ASSERT_NEAR(mm->cm.vert[v].Q(), core->distance[v], 1e-6 * (1 + core->distance[v])) << v;
+    ASSERT_NEAR(mm->cm.vert[v].Q(), core->field.distance[v], 1e-6 * (1 + core->field.distance[v])) << v;
   EXPECT_NE(logText().find("Reached 6475 of 6475 vertices"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("Triangulation used as it is"), std::string::npos) << logText();
+  // Against CGAL's exact geodesics: at least as close as the plain engine (fastMarching, what the
+  // filter ran before geodesicDistance), and within 1% on average.
+  const std::vector<double> exact0 = oracle::exactGeodesic(same, 0), exact1 = oracle::exactGeodesic(same, 3000);
+  std::vector<double> exact(same.vertexCount()), written(same.vertexCount());
+  for (int v = 0; v < same.vertexCount(); ++v) {
+    exact[v] = std::min(exact0[v], exact1[v]);
+    written[v] = mm->cm.vert[v].Q();
+  }
+  const auto plain = fastMarching(same, Metric::uniform(), {0, 3000});
+  ASSERT_TRUE(plain);
+  const DistanceError ours = distanceError(written, exact), before = distanceError(plain->distance, exact);
+  std::printf("fandisk, 2 sources: filter mean %.4f %% max %.4f %% | fastMarching mean %.4f %% max %.4f %%\n",
+              100 * ours.meanRelative, 100 * ours.maxRelativeToMax, 100 * before.meanRelative,
+              100 * before.maxRelativeToMax);
+  EXPECT_LE(ours.meanRelative, 0.01);
+  EXPECT_LE(ours.meanRelative, before.meanRelative);
 }
 
 TEST_F(FilterInProcess, QualityAsSpeedHalvesDistancesForSpeedTwo) {
@@ -265,6 +290,202 @@ TEST_F(FilterInProcess, ImpossibleParameters) {
   declare(*mm);
   params.setValue(filters::param::kColorBy, EnumValue(7));
   expectCleanFailure(*mm, StatusCode::InvalidInput, "ColorBy must be 0");
+  declare(*mm);
+  params.setValue(filters::param::kSurfaceRefinement, EnumValue(3));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "Refinement must be 0 (Auto), 1 (On) or 2 (Off), got 3");
+  declare(*mm);
+  params.setValue(filters::param::kSurfaceRefinement, EnumValue(-1));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "Refinement must be 0");
+}
+
+// --- Fast marching on poor triangulations (issue 17): the fronts run on the intrinsic Delaunay
+// refinement of a CAD sliver mesh, the values are read at the mesh's own vertices ---------------
+
+/// A layer's mesh as the filter sees it (MeshLab's float coordinates).
+TriMesh layerMesh(const MeshModel& mm) {
+  std::vector<Vec3> positions;
+  for (const auto& v : mm.cm.vert) positions.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
+  return std::move(buildTriMesh(positions, faceIndices(mm))).value();
+}
+
+std::vector<double> vertexQualities(const MeshModel& mm) {
+  std::vector<double> q;
+  for (const auto& v : mm.cm.vert) q.push_back(v.cQ());
+  return q;
+}
+
+class FastMarchingRefined : public FilterInProcess {
+ protected:
+  MeshModel* gear = nullptr;
+  TriMesh mesh;               ///< the gear as the filter sees it
+  std::vector<double> exact;  ///< CGAL's exact geodesic distance from vertex 0
+
+  void SetUp() override {
+    FilterInProcess::SetUp();
+    const TriMesh cad = test::cadGear();
+    gear = addMesh(doc, cad.positions, cad.triangles);
+    mesh = layerMesh(*gear);
+    exact = oracle::exactGeodesic(mesh, 0);
+  }
+  /// Runs the filter from the selected `sources` with the given refinement; the log of this run.
+  std::string run(const std::vector<int>& sources, SurfaceRefinement refinement) {
+    for (auto& v : gear->cm.vert) v.ClearS();
+    for (int s : sources) gear->cm.vert[s].SetS();
+    declare(*gear);
+    params.setValue(filters::param::kSurfaceRefinement, EnumValue(int(refinement)));
+    log.Clear();
+    EXPECT_TRUE(apply()) << logText();
+    return logText();
+  }
+};
+
+// Auto refines the gear's slivers (the log says so, with the points inserted), Off does not;
+// Auto's quality is the core's geodesicDistance and within 1% of exact on average, Off's is worse.
+TEST_F(FastMarchingRefined, AutoRefinesTheSliverMeshAndIsCloserToExactThanOff) {
+  const std::string autoLog = run({0}, SurfaceRefinement::Auto);
+  const std::vector<double> autoQ = vertexQualities(*gear);
+  EXPECT_NE(autoLog.find("Surface refined for the fronts (intrinsic Delaunay, angles >= 25 deg, edges <= 2% of the "
+                         "diagonal): "),
+            std::string::npos)
+      << autoLog;
+  EXPECT_GT(test::numberBefore(autoLog, "points inserted"), 0) << autoLog;
+  EXPECT_NE(autoLog.find(describe(assessTriangulation(mesh))), std::string::npos) << autoLog;
+  EXPECT_LT(autoLog.find("Surface refined"), autoLog.find("Time: ")) << "the Time line is last";
+  const Expected<GeodesicDistanceResult> core = geodesicDistance(mesh, {}, {0});
+  ASSERT_TRUE(core);
+  ASSERT_TRUE(core->refined);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    ASSERT_NEAR(autoQ[v], core->field.distance[v], 1e-6 * (1 + core->field.distance[v])) << v;
+
+  const std::string offLog = run({0}, SurfaceRefinement::Off);
+  const std::vector<double> offQ = vertexQualities(*gear);
+  EXPECT_EQ(offLog.find("Surface refined"), std::string::npos) << offLog;
+  EXPECT_NE(offLog.find("Refinement Off: the fronts ran on the triangulation as it is (" +
+                        describe(assessTriangulation(mesh)) + ")"),
+            std::string::npos)
+      << offLog;
+
+  const DistanceError autoError = distanceError(autoQ, exact), offError = distanceError(offQ, exact);
+  std::printf("cad_gear %d v, %d points inserted: Auto mean %.3f %% max %.3f %% | Off mean %.3f %% max %.3f %%\n",
+              mesh.vertexCount(), core->insertedPoints, 100 * autoError.meanRelative, 100 * autoError.maxRelativeToMax,
+              100 * offError.meanRelative, 100 * offError.maxRelativeToMax);
+  EXPECT_EQ(autoError.comparedVertices, offError.comparedVertices);
+  EXPECT_LE(autoError.meanRelative, 0.01);
+  EXPECT_LT(autoError.meanRelative, offError.meanRelative);
+  EXPECT_LT(autoError.maxRelativeToMax, offError.maxRelativeToMax);
+}
+
+// MaxDistance on the refined surface: unreached vertices get -1, reached ones are within the limit.
+TEST_F(FastMarchingRefined, MaxDistanceOnTheRefinedSurface) {
+  const double limit = 0.5 * *std::max_element(exact.begin(), exact.end());
+  for (auto& v : gear->cm.vert) v.ClearS();
+  gear->cm.vert[0].SetS();
+  declare(*gear);
+  params.setValue(filters::param::kMaxDistance, AbsPercValue(float(limit)));
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_NE(logText().find("Surface refined"), std::string::npos) << logText();
+  int reached = 0;
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    const float q = gear->cm.vert[v].cQ();
+    ASSERT_TRUE(q == -1.0f || (q >= 0.0f && q <= float(limit))) << v << ": " << q;
+    reached += q >= 0.0f;
+    // Within 1% of the limit, exact geodesics say on which side of it a vertex is.
+    if (exact[v] < 0.99 * limit) {
+      EXPECT_GE(q, 0.0f) << v;
+    } else if (exact[v] > 1.01 * limit) {
+      EXPECT_EQ(q, -1.0f) << v;
+    }
+  }
+  EXPECT_GT(reached, 0);
+  EXPECT_LT(reached, mesh.vertexCount());
+  EXPECT_NE(logText().find("were not reached"), std::string::npos) << logText();
+}
+
+// Two sources, ColorBy = Voronoi cell: away from the bisector, each vertex has its nearest source's
+// colour by the exact distances; UseQualityAsSpeed with quality 2 halves the distance.
+TEST_F(FastMarchingRefined, VoronoiCellsAndSpeedOnTheRefinedSurface) {
+  const int far = static_cast<int>(std::max_element(exact.begin(), exact.end()) - exact.begin());
+  const std::vector<double> exactFar = oracle::exactGeodesic(mesh, far);
+  for (auto& v : gear->cm.vert) v.ClearS();
+  gear->cm.vert[0].SetS();
+  gear->cm.vert[far].SetS();
+  declare(*gear);
+  params.setValue(filters::param::kColorBy, EnumValue(int(filters::ColorBy::VoronoiCell)));
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_NE(logText().find("Surface refined"), std::string::npos) << logText();
+  const vcg::Color4b colour0 = gear->cm.vert[0].cC(), colourFar = gear->cm.vert[far].cC();
+  ASSERT_NE(colour0, colourFar);
+  int compared = 0, wrong = 0;
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    if (std::abs(exact[v] - exactFar[v]) < 0.02 * exact[far]) continue;  // near the bisector
+    ++compared;
+    wrong += gear->cm.vert[v].cC() != (exact[v] < exactFar[v] ? colour0 : colourFar);
+  }
+  EXPECT_GT(compared, mesh.vertexCount() / 2);
+  EXPECT_EQ(wrong, 0);
+
+  // Speed 2 everywhere: twice the travel time is the distance to the nearest source.
+  for (auto& v : gear->cm.vert) v.Q() = 2.0f;
+  gear->updateDataMask(MeshModel::MM_VERTQUALITY);
+  declare(*gear);
+  params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
+  log.Clear();
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_NE(logText().find("Surface refined"), std::string::npos) << logText();
+  std::vector<double> twice(mesh.vertexCount()), nearest(mesh.vertexCount());
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    ASSERT_GE(gear->cm.vert[v].cQ(), 0.0f) << "vertex " << v << " not reached";
+    twice[v] = 2.0 * gear->cm.vert[v].cQ();
+    nearest[v] = std::min(exact[v], exactFar[v]);
+  }
+  const DistanceError e = distanceError(twice, nearest);
+  std::printf("cad_gear, speed 2, two sources: twice the time vs exact: mean %.3f %% max %.3f %%\n",
+              100 * e.meanRelative, 100 * e.maxRelativeToMax);
+  EXPECT_LE(e.meanRelative, 0.01);
+}
+
+// A failing case on the refined surface (a zero speed) leaves the gear as it was.
+TEST_F(FastMarchingRefined, FailureLeavesTheMeshUnchanged) {
+  for (auto& v : gear->cm.vert) v.Q() = 1.0f;
+  gear->cm.vert[7].Q() = 0.0f;
+  gear->updateDataMask(MeshModel::MM_VERTQUALITY);
+  gear->cm.vert[0].SetS();
+  declare(*gear);
+  params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
+  expectCleanFailure(*gear, StatusCode::InvalidInput, "vertex 7 has");
+}
+
+// Two grids sharing only their corner vertex 0 (a non-manifold vertex): the intrinsic refinement
+// cannot take it. Auto falls back to the mesh as it is (the same values as Off) and says why; On
+// fails cleanly.
+TEST_F(FilterInProcess, NonManifoldVertexAutoFallsBackOnFails) {
+  const TriMesh grid = test::planeGrid(4);
+  std::vector<Vec3> positions = grid.positions;
+  std::vector<Tri> triangles = grid.triangles;
+  const int n = grid.vertexCount();
+  for (int v = 1; v < n; ++v) positions.push_back(-grid.positions[v]);  // the mirror image, corner 0 shared
+  auto mirrored = [n](int v) { return v == 0 ? 0 : v + n - 1; };
+  for (const Tri& t : grid.triangles) triangles.push_back({mirrored(t[0]), mirrored(t[1]), mirrored(t[2])});
+  MeshModel* mm = addMesh(doc, positions, triangles);
+  ASSERT_EQ(layerMesh(*mm).topology.nonManifoldVertices, 1);
+  mm->cm.vert[n - 1].SetS();  // the far corner of the first grid: the front crosses vertex 0
+  std::vector<std::vector<double>> fields;
+  for (SurfaceRefinement r : {SurfaceRefinement::Auto, SurfaceRefinement::Off}) {
+    declare(*mm);
+    params.setValue(filters::param::kSurfaceRefinement, EnumValue(int(r)));
+    log.Clear();
+    ASSERT_TRUE(apply()) << logText();
+    EXPECT_NE(logText().find("Triangulation used as it is"), std::string::npos) << logText();
+    EXPECT_NE(logText().find("Reached " + std::to_string(mm->cm.vn) + " of"), std::string::npos) << logText();
+    const bool skipped = logText().find("could not be refined (intrinsic Delaunay refinement needs a manifold mesh") !=
+                         std::string::npos;
+    EXPECT_EQ(skipped, r == SurfaceRefinement::Auto) << logText();
+    fields.push_back(vertexQualities(*mm));
+  }
+  EXPECT_EQ(fields[0], fields[1]) << "Auto's fallback is the mesh as it is";
+  declare(*mm);
+  params.setValue(filters::param::kSurfaceRefinement, EnumValue(int(SurfaceRefinement::On)));
+  expectCleanFailure(*mm, StatusCode::NonManifold, "Refinement is On: intrinsic Delaunay refinement needs a manifold");
 }
 
 // Every default a filter declares is the default of the core's Params struct it feeds (one
@@ -277,6 +498,9 @@ TEST_F(FilterInProcess, DeclaredDefaultsAreTheCoreParamsDefaults) {
   const float diag = mm->cm.bbox.Diag();
   const SurfaceRemeshParams remesh;
   const AdaptiveRemeshParams adaptive;
+  declare(*mm);  // the fast-marching filter (SetUp)
+  EXPECT_EQ(params.getEnum(filters::param::kSurfaceRefinement), int(GeodesicSurfaceParams().refinement));
+  EXPECT_EQ(params.getEnum(filters::param::kSurfaceRefinement), int(SurfaceRefinement::Auto));
   for (const char* name : {"Remeshing: Geodesic Uniform", "Remeshing: Geodesic Adaptive"}) {
     SCOPED_TRACE(name);
     use(name);

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/geodesic/fast_marching.h"
+#include "core/geodesic/geodesic_surface.h"
 #include "core/measure/evaluation.h"
 #include "tests/oracles/geodesic_oracles.h"
 #include "tests/support/test_support.h"
@@ -104,11 +105,11 @@ TEST(BadTriangles, NeedlesAndZeroAreaFacesStayWithinTwiceTheGoodError) {
 }
 
 // Meshes of the data set that come with slivers (angles down to 0.03 degree) and angles above
-// 150 degrees: finite, monotone, complete; error within 2x of the mean error on the good meshes
-// (fandisk, bunny00, armadillo), and well ahead of Dijkstra.
-// Known limitation (issue 17): cheese.off (genus 133, holes in flat faces with vertices only on
-// their rims) stays near 5%, held to the Dijkstra bound only: first-order local updates do not
-// follow geodesics bent around its saddle rims; the fix is new points or window propagation.
+// 150 degrees, through geodesicDistance (what the filters run: Auto refines each of them): finite,
+// monotone and complete at the input's vertices; mean error within 1%, within 2x of the mean
+// error on the good meshes (fandisk, bunny00, armadillo) except cheese, well ahead of Dijkstra
+// and no worse than vcglib. cheese.off (genus 133, holes in flat faces with vertices only on their rims) is no
+// longer an exception: 4.98% on the input, 0.87% on the refined surface (issue 17).
 TEST(BadTriangles, DataSetSliverMeshes) {
   double goodSum = 0.0;
   for (const char* name : {"fandisk.off", "bunny00.off", "armadillo.off"}) {
@@ -120,22 +121,26 @@ TEST(BadTriangles, DataSetSliverMeshes) {
   for (const char* name : {"blade.off", "mannequin-devil.off", "turbine.off", "cheese.off"}) {
     SCOPED_TRACE(name);
     const TriMesh m = test::loadRealMesh(name);
-    const auto r = fastMarching(m, Metric::uniform(), {0});
+    const auto r = geodesicDistance(m, {}, {0});
     ASSERT_TRUE(r);
-    expectFiniteMonotoneComplete(m, *r);
+    EXPECT_TRUE(r->refined);
+    expectFiniteMonotoneComplete(m, r->field);
     const std::vector<double> exact = oracle::exactGeodesic(m, 0);
-    const DistanceError e = distanceError(r->distance, exact);
+    const DistanceError e = distanceError(r->field.distance, exact);
     const DistanceError eDijkstra = distanceError(oracle::dijkstra(m, 0), exact);
     const DistanceError eVcg = distanceError(oracle::vcgGeodesic(m, 0), exact);
     std::printf(
-        "%-20s smallest angle %.3f deg: fast marching %.4f %%, vcglib %.4f %%, Dijkstra %.4f %% "
+        "%-20s smallest angle %.3f deg, %d points inserted: fast marching %.4f %%, vcglib %.4f %%, Dijkstra %.4f %% "
         "(2x the good meshes: %.4f %%)\n",
-        name, smallestAngleDegrees(m), 100 * e.meanRelative, 100 * eVcg.meanRelative, 100 * eDijkstra.meanRelative,
-        200 * good);
-    EXPECT_LE(e.meanRelative, eDijkstra.meanRelative / 3);
+        name, smallestAngleDegrees(m), r->insertedPoints, 100 * e.meanRelative, 100 * eVcg.meanRelative,
+        100 * eDijkstra.meanRelative, 200 * good);
+    EXPECT_LE(e.meanRelative, 0.01);
+    // cheese.off: 0.87%, under the 1% of issue 17 but above twice the scans' mean (0.65%).
     if (std::string(name) != "cheese.off") {
       EXPECT_LE(e.meanRelative, 2.0 * good);
     }
+    EXPECT_LE(e.meanRelative, eDijkstra.meanRelative / 3);
+    EXPECT_LE(e.meanRelative, eVcg.meanRelative);
   }
 }
 

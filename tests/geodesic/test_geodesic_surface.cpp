@@ -125,14 +125,15 @@ TEST_P(DataSetGeodesic, WithinOnePercentOfExactAndNoWorseThanVcglib) {
   // faces that glue its two halves along a segment fronts cannot cross by triangle updates (16%;
   // mollifying flat faces gives 0% but bends every flat face of the refinement by 1e-5 of the
   // mean edge length, beyond the refinement's area and angle-sum invariants); star.off (14
-  // vertices, 0.44% against vcglib's 0.05%). Held at their measured figures, so that any change
-  // shows.
+  // vertices, a cube with a spike on each face: 0.28% against vcglib's 0.05%, the refined front
+  // undershoots by 2.5% at the saddle corner across a spike from the source). Held at their
+  // measured figures, so that any change shows.
   if (GetParam() == "degtri_sliding.off") {
     EXPECT_LE(a.ours.meanRelative, 0.161);
     return;
   }
   if (GetParam() == "star.off") {
-    EXPECT_LE(a.ours.meanRelative, 0.0045);
+    EXPECT_LE(a.ours.meanRelative, 0.0029);
     return;
   }
   EXPECT_LE(a.ours.meanRelative, 0.01);
@@ -219,6 +220,27 @@ TEST(GeodesicSurface, MultiSourceLimitAndSpeedOnARefinedSurface) {
     nearest[v] = std::min(exact0[v], exact1[v]);
   }
   EXPECT_LE(distanceError(halfTime, nearest).meanRelative, 0.01);
+}
+
+// The result says when the refinement stopped at its point budget (the filter warns then): a
+// budget of 10 points on the gear runs out, with faces left below the bound; the default does not.
+TEST(GeodesicSurface, SaysWhenTheBudgetRanOut) {
+  const TriMesh m = test::cadGear();
+  const Expected<GeodesicDistanceResult> full = geodesicDistance(m, {}, {0});
+  ASSERT_TRUE(full);
+  ASSERT_TRUE(full->refined);
+  EXPECT_FALSE(full->budgetExhausted);
+  EXPECT_GT(full->insertedPoints, 10);
+  GeodesicDistanceParams small;
+  small.surface.intrinsic.maxInsertions = 10;
+  const Expected<GeodesicDistanceResult> cut = geodesicDistance(m, {}, {0}, small);
+  ASSERT_TRUE(cut);
+  ASSERT_TRUE(cut->refined);
+  EXPECT_TRUE(cut->budgetExhausted);
+  EXPECT_GT(cut->facesBelowMinAngle, 0);
+  const Expected<GeodesicDistanceResult> off = geodesicDistance(m, {}, {0}, withRefinement(SurfaceRefinement::Off));
+  ASSERT_TRUE(off);
+  EXPECT_FALSE(off->budgetExhausted);
 }
 
 TEST(GeodesicSurface, RefusesBadInput) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/base/math.h"
 
@@ -16,10 +17,22 @@ double angleFromLengths(double a, double b, double c) {
   return 2.0 * std::atan2(std::sqrt(num), std::sqrt(den));
 }
 
+double tanHalfSquaredFromLengths(double a, double b, double c) {
+  const double s = 0.5 * (a + b + c);
+  const double num = std::max(0.0, (s - b) * (s - c));
+  const double den = std::max(0.0, s * (s - a));
+  if (den <= 0.0) return num > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
+  return num / den;
+}
+
 double angleBetween(const Vec2& u, const Vec2& w) { return std::atan2(cross2(u, w), u.dot(w)); }
 
 double SignpostMesh::cornerAngle(int h) const {
   return angleFromLengths(he[next(h)].length, he[h].length, he[prev(h)].length);
+}
+
+double SignpostMesh::cornerTanHalfSquared(int h) const {
+  return tanHalfSquaredFromLengths(he[next(h)].length, he[h].length, he[prev(h)].length);
 }
 
 std::array<Vec2, 3> SignpostMesh::layout(int f) const {

@@ -57,6 +57,8 @@ struct SignpostMesh {
 
   /// Angle at the tail of h in its face (between h and the reverse of prev(h)), from the lengths.
   double cornerAngle(int h) const;
+  /// tan^2 of half of cornerAngle(h): increasing with it, cheaper (no arc tangent).
+  double cornerTanHalfSquared(int h) const;
   /// The face laid out in the plane: vertex k at point k, tri[f][0] at the origin, tri[f][1] on
   /// the positive x axis, tri[f][2] above it.
   std::array<Vec2, 3> layout(int f) const;
@@ -104,6 +106,9 @@ inline Vec2 layoutBelow(double lab, double lenA, double lenB) {
 /// Angle facing side `a` of a triangle with sides a, b, c (half-angle formula, stable for
 /// slivers); pi when a >= b + c, 0 when a side is zero or a <= |b - c|.
 double angleFromLengths(double a, double b, double c);
+/// tan^2 of half the angle angleFromLengths gives (+inf for an angle of pi): the same order as the
+/// angle, with no arc tangent (the refinement's hot comparisons).
+double tanHalfSquaredFromLengths(double a, double b, double c);
 
 /// Angle from u to w counter-clockwise, in (-pi, pi].
 double angleBetween(const Vec2& u, const Vec2& w);

@@ -38,6 +38,20 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
           (r.flippedEdges > 0 ? "; " + count(r.flippedEdges) + " edges flipped to Delaunay" : std::string()));
 }
 
+/// When the repair added samples and the sampling was redone to land at the count asked for
+/// (issue 20): how many samplings, and the fewest vertices reached when the count was not.
+void logCountSearch(const SurfaceRemeshResult& r, FilterContext& ctx) {
+  if (r.samplingRounds <= 1) return;
+  const int got = r.mesh.vertexCount();
+  std::string line = "The repair added samples, so the sampling was redone with fewer: " + count(r.samplingRounds) +
+                     " samplings, the output closest to the " + count(r.countAsked) + " vertices asked for kept (" +
+                     count(r.sampledAsked) + " samples asked of the sampling)";
+  if (got > r.countAsked && r.fewestCount > 0)
+    line += "; the fewest vertices of an output without crossing faces at these settings: " + count(r.fewestCount) +
+            " (" + count(r.countAsked) + " asked)";
+  ctx.log(line);
+}
+
 /// The fronts ran on the intrinsic Delaunay refinement of the input (its triangles were poor).
 void logRefinedSurface(const SurfaceRemeshResult& r, FilterContext& ctx) {
   if (!r.refinedSurface) return;
@@ -135,6 +149,7 @@ void commitRemesh(MeshDocument& doc, const CurrentMesh& current, const SurfaceRe
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - commit.start).count();
   logOrientation(view.mesh, result, ctx);
   logCounts(view.mesh, result, commit, label, ctx);
+  logCountSearch(result, ctx);
   logRefinedSurface(result, ctx);
   warnIfSoup(view.mesh, result, ctx);
   logQuality(result, ctx);

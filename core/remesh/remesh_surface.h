@@ -11,6 +11,8 @@
 //           --transferMetric-----> the metric at the subdivision's vertices
 //         --farthestPointSampling--> samples + Voronoi cells          (one FastMarcher for
 //         --geodesicDelaunay-------> valid mesh of the input's topology  both stages)
+//           (if its repair added samples: sampled again with fewer, up to kMaxSamplingRounds
+//            samplings, the valid result closest to the count asked for kept)
 //         --relaxOnSurface---------> same mesh, better angles (on the input when refined)
 //         --map back---------------> each output vertex's origin on the input (flips undone)
 //         --measure (optional)-----> angles, surface distance both ways
@@ -53,6 +55,9 @@ struct SurfaceRemeshParams {
   static constexpr double kDefaultTargetFraction = 0.1;    ///< default target: this share of the input's vertices
   static constexpr int kMinDefaultTarget = 4;              ///< ... but at least this many
   static constexpr double kDefaultSpacingFraction = 0.02;  ///< default spacing: this share of the bbox diagonal
+  /// Samplings at most when the repair of the triangulation adds samples: the first, then redone
+  /// with fewer samples to land at the count asked for (sampleToCount in remesh_surface.cpp).
+  static constexpr int kMaxSamplingRounds = 4;
 
   /// The default target count for an input of `vertexCount` vertices (10%, at least 4).
   static int defaultTargetCount(int vertexCount);
@@ -99,8 +104,18 @@ struct SurfaceRemeshResult {
   std::vector<SurfacePoint> origin;  ///< per output vertex, where it lies on the input
   /// Per input vertex, its Voronoi cell: the output vertex it belongs to.
   std::vector<int> cell;
-  int frontVertices = 0;        ///< vertices of the mesh the fronts ran on (refined, or subdivided `refinement` times)
-  int sampledCount = 0;         ///< samples placed by farthest-point sampling
+  int frontVertices = 0;  ///< vertices of the mesh the fronts ran on (refined, or subdivided `refinement` times)
+  /// The count asked for (sampling.targetCount; 0 = spacing only) and how it was reached: when the
+  /// repair added samples, the sampling was redone with fewer (at most kMaxSamplingRounds
+  /// samplings) and the valid output closest to the count kept, preferring outputs without
+  /// crossing faces (selfIntersectingFaces), from `sampledAsked` samples asked of the sampling.
+  /// fewestCount: the fewest output vertices of these samplings' outputs without crossing faces
+  /// (0 if none had none); above countAsked, the fewest this surface reached at these settings.
+  int countAsked = 0;
+  int samplingRounds = 0;
+  int sampledAsked = 0;
+  int fewestCount = 0;
+  int sampledCount = 0;         ///< samples placed by farthest-point sampling (of the kept sampling)
   double coveringRadius = 0.0;  ///< largest distance to a sample after the sampling (a travel time with a metric)
   int addedSamples = 0;         ///< samples the repair of the triangulation added
   int droppedSamples = 0;       ///< samples inside faces left out (nearest to no vertex)

@@ -75,12 +75,14 @@ TEST_P(RemeshCad, DefaultsKeepTopologyCountAndGiveNoSelfIntersections) {
   ASSERT_TRUE(crossing) << crossing.status().message;
   const test::AngleRecount angles = test::recountAngles(out);
   std::printf(
-      "%s: %d input vertices, %d asked, %d got (%d added, %d dropped), genus %d, %d loops, %d components; %zu "
+      "%s: %d input vertices, %d asked, %d got (%d samplings, %d asked of the kept one, fewest %d; %d added, %d "
+      "dropped), genus %d, %d loops, %d components; %zu "
       "self-intersecting pairs; smallest angle %.2f deg, %.1f %% under 30 deg; %s (%d inserted points); %.3f s "
       "(prepare %.3f)\n",
-      cad.name.c_str(), input.vertexCount(), target, out.vertexCount(), r.addedSamples, r.droppedSamples, rc.genusSum,
-      rc.boundaryLoops, rc.components, crossing->size(), angles.smallestDegrees, 100 * angles.shareBelow30,
-      r.refinedSurface ? "refined" : "not refined", r.refinedPoints, seconds, r.times.prepare);
+      cad.name.c_str(), input.vertexCount(), target, out.vertexCount(), r.samplingRounds, r.sampledAsked, r.fewestCount,
+      r.addedSamples, r.droppedSamples, rc.genusSum, rc.boundaryLoops, rc.components, crossing->size(),
+      angles.smallestDegrees, 100 * angles.shareBelow30, r.refinedSurface ? "refined" : "not refined", r.refinedPoints,
+      seconds, r.times.prepare);
   EXPECT_EQ(in.genusSum, cad.genus);
   test::expectValidWithTopologyOf(rc, in);
   EXPECT_LE(std::abs(out.vertexCount() - target), 0.1 * target);

@@ -188,7 +188,7 @@ Expected<SampledDual> sampleToCount(FastMarcher& marcher, const FrontSurface& fr
   std::optional<SampledDual> best;
   std::pair<bool, int> bestMiss;
   int request = target, below = 0, above = std::numeric_limits<int>::max();
-  for (int round = 0; round < SurfaceRemeshParams::kMaxSamplingRounds && request > 0; ++round) {
+  for (int round = 0; round < SurfaceRemeshParams::kMaxSamplingRounds && (round == 0 || request > 0); ++round) {
     const double from = 1.0 - std::pow(0.5, round), to = 1.0 - std::pow(0.5, round + 1);
     Expected<SampledDual> run =
         sampleAndTriangulate(marcher, front, surface, params, request, progress.sub(from, to), r.times);

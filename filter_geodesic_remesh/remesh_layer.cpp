@@ -25,7 +25,7 @@ void logOrientation(const TriMesh& input, const SurfaceRemeshResult& r, FilterCo
 void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshCommit& commit, const QString& label,
                FilterContext& ctx) {
   ctx.log(commit.title + " of " + count(input.vertexCount()) + " vertices, " + count(input.faceCount()) + " faces" +
-          (commit.refinement > 0
+          (commit.refinement > 0 && !r.refinedSurface
                ? " (fronts on " + count(r.frontVertices) + " vertices, " + count(commit.refinement) + " subdivisions)"
                : std::string()) +
           ": " + count(r.mesh.vertexCount()) + " vertices, " + count(r.mesh.faceCount()) + " faces on the new layer '" +
@@ -36,6 +36,30 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
           "; covering radius " + formatNumber(r.coveringRadius, "%.4g") +
           (commit.weighted ? " (a travel time: distance over speed)" : std::string()) +
           (r.flippedEdges > 0 ? "; " + count(r.flippedEdges) + " edges flipped to Delaunay" : std::string()));
+}
+
+/// When the repair added samples and the sampling was redone to land at the count asked for
+/// (issue 20): how many samplings, and the fewest vertices reached when the count was not.
+void logCountSearch(const SurfaceRemeshResult& r, FilterContext& ctx) {
+  if (r.samplingRounds <= 1) return;
+  const int got = r.mesh.vertexCount();
+  std::string line = "The repair added samples, so the sampling was redone with fewer: " + count(r.samplingRounds) +
+                     " samplings, the output closest to the " + count(r.countAsked) + " vertices asked for kept (" +
+                     count(r.sampledAsked) + " samples asked of the sampling)";
+  if (got > r.countAsked && r.fewestCount > 0)
+    line += "; the fewest vertices of an output without crossing faces at these settings: " + count(r.fewestCount) +
+            " (" + count(r.countAsked) + " asked)";
+  ctx.log(line);
+}
+
+/// The fronts ran on the intrinsic Delaunay refinement of the input (its triangles were poor).
+void logRefinedSurface(const SurfaceRemeshResult& r, FilterContext& ctx) {
+  if (!r.refinedSurface) return;
+  ctx.log(
+      "The input's triangles are poor (slivers or caps, as CAD exports have): the fronts ran on its intrinsic "
+      "Delaunay refinement, " +
+      count(r.refinedPoints) + " points inserted (" + count(r.frontVertices) +
+      " vertices); every output vertex lies on the input");
 }
 
 /// A triangle soup comes back as it was: say why, and what helps.
@@ -125,6 +149,8 @@ void commitRemesh(MeshDocument& doc, const CurrentMesh& current, const SurfaceRe
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - commit.start).count();
   logOrientation(view.mesh, result, ctx);
   logCounts(view.mesh, result, commit, label, ctx);
+  logCountSearch(result, ctx);
+  logRefinedSurface(result, ctx);
   warnIfSoup(view.mesh, result, ctx);
   logQuality(result, ctx);
   ctx.log("Time: " + formatDuration(ms));

@@ -14,7 +14,9 @@ void declareUniformRemesh(const MeshModel& mesh, RichParameterList& params) {
                               QString::number(SurfaceRemeshParams::kMaxRefinement) +
                               "; each level: 4x the vertices and about 4x the time). Finer cells give better "
                               "shaped triangles when the target is a large share of the input's vertices; samples "
-                              "then also lie between input vertices (default " +
+                              "then also lie between input vertices. Not applied where the input's triangles are "
+                              "poor (slivers, as CAD exports have): the fronts then run on its intrinsic Delaunay "
+                              "refinement (default " +
                               QString::number(defaults.refinement) + ")."));
   params.addParam(RichInt(param::kRelaxation, defaults.relaxation.iterations, "Relaxation",
                           "Rounds of tangential relaxation after the triangulation (0 to " +

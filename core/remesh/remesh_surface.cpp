@@ -2,12 +2,17 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
 
 #include "core/geodesic/fast_marching.h"
+#include "core/geodesic/geodesic_surface.h"
 #include "core/mesh/orientation.h"
+#include "core/mesh/self_intersection.h"
 #include "core/mesh/subdivide.h"
 
 namespace gr {
@@ -31,6 +36,13 @@ Status checkRemeshInput(const TriMesh& input, const SurfaceRemeshParams& params)
   if (params.refinement < 0 || params.refinement > SurfaceRemeshParams::kMaxRefinement)
     return invalidInput("Refinement must be 0 to " + std::to_string(SurfaceRemeshParams::kMaxRefinement) + ", got " +
                         std::to_string(params.refinement));
+  // The target is bounded by the input's vertices in faces, also when the fronts run on a refined
+  // surface with more vertices (the output never has more vertices than the input offers).
+  int usable = 0;
+  for (int v = 0; v < input.vertexCount(); ++v) usable += input.valence(v) > 0;
+  if (params.sampling.targetCount > usable)
+    return invalidInput("cannot place " + std::to_string(params.sampling.targetCount) + " samples on " +
+                        std::to_string(usable) + " vertices");
   const int rounds = params.relaxation.iterations;
   if (rounds < 0 || rounds > SurfaceRemeshParams::kMaxRelaxationRounds)
     return invalidInput("Relaxation must be 0 to " + std::to_string(SurfaceRemeshParams::kMaxRelaxationRounds) +
@@ -61,26 +73,145 @@ Expected<OrientedSurface> orientedSurface(const TriMesh& input) {
   return s;
 }
 
-/// The three stages on one engine: sampling, triangulation of its Voronoi diagram, relaxation.
-Status sampleTriangulateRelax(FastMarcher& marcher, const SurfaceRemeshParams& params, Progress progress,
-                              FpsResult& sampling, DelaunayResult& triangulation, SurfaceRemeshResult& r) {
-  auto clock = std::chrono::steady_clock::now();
-  Expected<FpsResult> fps = farthestPointSampling(marcher, params.sampling, progress.sub(0.0, 0.65));
-  if (!fps) return fps.status();
-  sampling = std::move(*fps);
-  r.times.sampling = lap(clock);
-  Expected<DelaunayResult> dual =
-      geodesicDelaunay(marcher, sampling.origin, params.triangulation, progress.sub(0.65, 0.95));
-  if (!dual) return dual.status();
-  triangulation = std::move(*dual);
-  r.times.triangulation = lap(clock);
-  if (!progress.report(0.95, "Relaxation")) return cancelled();
-  Expected<RelaxationResult> relaxed =
-      relaxOnSurface(triangulation.mesh, triangulation.origin, marcher.mesh(), params.relaxation);
-  if (!relaxed) return relaxed.status();
-  r.relaxation = *relaxed;
-  r.times.relaxation = lap(clock);
+/// The mesh the fronts run on: the oriented input's intrinsic Delaunay refinement (`geodesic`
+/// refined), or the oriented input subdivided `params.refinement` times (`fine`).
+struct FrontSurface {
+  GeodesicSurface geodesic;
+  std::optional<Subdivision> fine;  ///< when not refined
+  Metric fineMetric;                ///< on fine's vertices
+
+  const TriMesh& mesh() const { return geodesic.refined ? geodesic.refinement.mesh : fine->mesh; }
+};
+Expected<FrontSurface> frontSurface(const TriMesh& surface, const Metric& metric, const SurfaceRemeshParams& params,
+                                    Progress progress) {
+  FrontSurface f;
+  Expected<GeodesicSurface> geodesic = prepareGeodesicSurface(surface, metric, params.surface, std::move(progress));
+  if (!geodesic) return geodesic.status();
+  f.geodesic = std::move(*geodesic);
+  if (f.geodesic.refined) return f;
+  Expected<Subdivision> fine = subdivideMidpoint(surface, params.refinement);
+  if (!fine) return fine.status();
+  Expected<Metric> fineMetric = transferMetric(metric, surface, fine->origin);
+  if (!fineMetric) return fineMetric.status();
+  f.fine = std::move(*fine);
+  f.fineMetric = std::move(*fineMetric);
+  return f;
+}
+
+/// Points of the refined surface as points of the oriented input: its vertices' origins. Samples
+/// inside refined faces do not occur (sub-vertex placement is off there); one would be a bug.
+Status originsOnSurface(const GeodesicSurface& geodesic, std::vector<SurfacePoint>& points) {
+  for (SurfacePoint& p : points) {
+    if (p.vertex < 0)
+      return internalError("a sample inside a face of the refined surface (sub-vertex placement is off)");
+    p = geodesic.origin(p.vertex);
+  }
   return Status::ok();
+}
+
+/// The relaxation, on the subdivision (unrefined) or on the oriented input `surface` (refined: the
+/// triangulation's origins are mapped to it first; the refined mesh's faces are chords, not the
+/// surface).
+Status relaxDual(const FrontSurface& front, const TriMesh& surface, const SurfaceRemeshParams& params,
+                 DelaunayResult& triangulation, RelaxationResult& result, RemeshStageTimes& times) {
+  auto clock = std::chrono::steady_clock::now();
+  if (front.geodesic.refined)
+    if (Status s = originsOnSurface(front.geodesic, triangulation.origin); !s) return s;
+  const TriMesh& relaxOn = front.geodesic.refined ? surface : front.fine->mesh;
+  Expected<RelaxationResult> relaxed =
+      relaxOnSurface(triangulation.mesh, triangulation.origin, relaxOn, params.relaxation);
+  if (!relaxed) return relaxed.status();
+  result = *relaxed;
+  times.relaxation += lap(clock);
+  return Status::ok();
+}
+
+/// One sampling of `request` samples, the triangulation of its Voronoi diagram on the same engine
+/// (the sampling resets it; the triangulation goes on from the sampling's field), relaxed.
+struct SampledDual {
+  FpsResult sampling;
+  DelaunayResult dual;
+  RelaxationResult relaxation;
+  int requested = 0;
+};
+Expected<SampledDual> sampleAndTriangulate(FastMarcher& marcher, const FrontSurface& front, const TriMesh& surface,
+                                           const SurfaceRemeshParams& params, int request, Progress progress,
+                                           RemeshStageTimes& times) {
+  auto clock = std::chrono::steady_clock::now();
+  SampledDual d;
+  d.requested = request;
+  FpsParams fpsParams = params.sampling;
+  fpsParams.targetCount = request;
+  if (front.geodesic.refined) fpsParams.subVertexPlacement = false;  // no exact origin on the input inside a face
+  Expected<FpsResult> fps = farthestPointSampling(marcher, fpsParams, progress.sub(0.0, 0.7));
+  if (!fps) return fps.status();
+  d.sampling = std::move(*fps);
+  times.sampling += lap(clock);
+  Expected<DelaunayResult> dual =
+      geodesicDelaunay(marcher, d.sampling.origin, params.triangulation, progress.sub(0.7, 0.95));
+  if (!dual) return dual.status();
+  d.dual = std::move(*dual);
+  times.triangulation += lap(clock);
+  if (!progress.report(0.95, "Relaxation")) return cancelled();
+  if (Status s = relaxDual(front, surface, params, d.dual, d.relaxation, times); !s) return s;
+  return d;
+}
+
+/// The next count to ask the sampling for, or 0 to stop: the last request less the surplus (or
+/// plus the shortfall), kept strictly between the largest request that gave too few vertices
+/// (`below`) and the smallest that gave too many (`above`), else halfway between them.
+int nextRequest(int request, int got, int target, int below, int above) {
+  int next = request - (got - target);
+  if (next <= below || next >= above) next = below + (above - below) / 2;
+  next = std::max(next, 1);
+  return next <= below || next >= above || next == request ? 0 : next;
+}
+
+/// How far a valid triangulation is from what is asked: crossing faces first (an output that is
+/// not embedded, as thin plates give when sampled too sparsely: cad_gear at 100-102 samples), then the
+/// distance to the count. Smaller is better.
+std::pair<bool, int> miss(const SampledDual& d, int target) {
+  const int got = d.dual.mesh.vertexCount();
+  return {!selfIntersectingFaces(d.dual.mesh, 1).empty(), std::abs(got - target)};
+}
+
+/// Issue 20: when the repair of the triangulation added samples, the sampling is redone with
+/// fewer so that the output lands at the count asked for, at most kMaxSamplingRounds samplings in
+/// all; of the valid results the one closest to the count without crossing faces is kept (the
+/// first of equals; with crossings only if all have some). A redo that fails (the repair does not
+/// converge from too few samples) ends the search with the best so far. Without a count (spacing
+/// only), or when the first sampling lands on it, one sampling.
+Expected<SampledDual> sampleToCount(FastMarcher& marcher, const FrontSurface& front, const TriMesh& surface,
+                                    const SurfaceRemeshParams& params, Progress progress, SurfaceRemeshResult& r) {
+  const int target = params.sampling.targetCount;
+  r.countAsked = target;
+  std::optional<SampledDual> best;
+  std::pair<bool, int> bestMiss;
+  int request = target, below = 0, above = std::numeric_limits<int>::max();
+  for (int round = 0; round < SurfaceRemeshParams::kMaxSamplingRounds && (round == 0 || request > 0); ++round) {
+    const double from = 1.0 - std::pow(0.5, round), to = 1.0 - std::pow(0.5, round + 1);
+    Expected<SampledDual> run =
+        sampleAndTriangulate(marcher, front, surface, params, request, progress.sub(from, to), r.times);
+    if (!run && (!best || run.status().code == StatusCode::Cancelled)) return run.status();
+    if (!run) break;
+    ++r.samplingRounds;
+    const int got = run->dual.mesh.vertexCount();
+    if (target <= 0 || (round == 0 && got == target)) {
+      r.fewestCount = got;
+      return std::move(*run);
+    }
+    const std::pair<bool, int> runMiss = miss(*run, target);
+    if (!runMiss.first) r.fewestCount = r.fewestCount > 0 ? std::min(r.fewestCount, got) : got;
+    if (!best || runMiss < bestMiss) {
+      best = std::move(*run);
+      bestMiss = runMiss;
+    }
+    if (got == target) break;
+    if (got > target) above = std::min(above, request);
+    if (got < target) below = std::max(below, request);
+    request = nextRequest(request, got, target, below, above);
+  }
+  return std::move(*best);
 }
 
 /// Angles of the output and its distance to the input both ways.
@@ -93,13 +224,14 @@ Status measureOutput(const TriMesh& input, SurfaceRemeshResult& r, Progress prog
   return Status::ok();
 }
 
-/// Each output vertex's point on the mesh the fronts ran on, as a point of the input: through
-/// the subdivision, then with the orientation flip of its face undone.
-std::vector<SurfacePoint> originsOnInput(const std::vector<SurfacePoint>& onFine, const Subdivision& fine,
+/// Each output vertex's point on the input: through the subdivision when not refined (points on
+/// a refined surface are already on the oriented input), then with the orientation flip of its
+/// face undone.
+std::vector<SurfacePoint> originsOnInput(const std::vector<SurfacePoint>& onFront, const FrontSurface& front,
                                          const TriMesh& surface, const std::vector<char>& flipped) {
-  std::vector<SurfacePoint> origin(onFine.size());
+  std::vector<SurfacePoint> origin(onFront.size());
   for (size_t i = 0; i < origin.size(); ++i) {
-    origin[i] = fine.originOf(surface, onFine[i]);
+    origin[i] = front.fine ? front.fine->originOf(surface, onFront[i]) : onFront[i];
     if (origin[i].face >= 0 && !flipped.empty() && flipped[origin[i].face])
       std::swap(origin[i].bary[1], origin[i].bary[2]);
   }
@@ -126,23 +258,28 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   Expected<OrientedSurface> oriented = orientedSurface(input);
   if (!oriented) return oriented.status();
   const TriMesh& surface = oriented->copy ? *oriented->copy : input;
-  Expected<Subdivision> fine = subdivideMidpoint(surface, params.refinement);
-  if (!fine) return fine.status();
-  Expected<Metric> fineMetric = transferMetric(metric, surface, fine->origin);
-  if (!fineMetric) return fineMetric.status();
+  const double remeshShare = params.measure ? 0.9 : 1.0;
+  Expected<FrontSurface> front = frontSurface(surface, metric, params, progress.sub(0.0, 0.1 * remeshShare));
+  if (!front) return front.status();
   r.times.prepare = lap(clock);
-  FastMarcher marcher(fine->mesh, *fineMetric);  // one engine: the triangulation goes on from the sampling's field
+  // One engine: the triangulation goes on from the sampling's field.
+  FastMarcher marcher =
+      front->geodesic.refined ? front->geodesic.makeMarcher() : FastMarcher(front->fine->mesh, front->fineMetric);
   r.times.engine = lap(clock);
 
-  FpsResult sampling;
-  DelaunayResult dual;
-  const double remeshShare = params.measure ? 0.9 : 1.0;
-  if (Status s = sampleTriangulateRelax(marcher, params, progress.sub(0.0, remeshShare), sampling, dual, r); !s)
-    return s;
+  const Progress remeshing = progress.sub(front->geodesic.refined ? 0.1 * remeshShare : 0.0, remeshShare);
+  Expected<SampledDual> sampled = sampleToCount(marcher, *front, surface, params, remeshing, r);
+  if (!sampled) return sampled.status();
+  const FpsResult& sampling = sampled->sampling;
+  DelaunayResult& dual = sampled->dual;
+  r.sampledAsked = sampled->requested;
+  r.relaxation = sampled->relaxation;
   r.mesh = std::move(dual.mesh);
-  r.origin = originsOnInput(dual.origin, *fine, surface, oriented->flipped);
+  r.origin = originsOnInput(dual.origin, *front, surface, oriented->flipped);
   r.cell.assign(dual.cell.begin(), dual.cell.begin() + input.vertexCount());  // input vertices come first
-  r.frontVertices = fine->mesh.vertexCount();
+  r.frontVertices = front->mesh().vertexCount();
+  r.refinedSurface = front->geodesic.refined;
+  r.refinedPoints = front->geodesic.insertedPoints();
   r.sampledCount = static_cast<int>(sampling.samples.size());
   r.coveringRadius = sampling.coveringRadius;
   r.addedSamples = dual.addedSamples;

@@ -2,16 +2,33 @@
 // filters, the tests and the benchmarks call remeshSurface and nothing else.
 //
 //   input --orientCoherently--> oriented copy (only if some faces run against their neighbours)
-//         --subdivideMidpoint--> the mesh the fronts run on (refinement levels, same surface)
-//         --transferMetric-----> the metric at the subdivision's vertices
+//         --prepareGeodesicSurface--> the surface the fronts run on (geodesic_surface.h): where
+//                                the triangles are poor (Auto: slivers, caps, a coarse CAD-like
+//                                mesh), its intrinsic Delaunay refinement (angles >= 25 deg, edges
+//                                <= 2% of the diagonal, each vertex with its origin on the input),
+//                                the metric transferred; else
+//           --subdivideMidpoint--> the input subdivided `refinement` times (same surface) and
+//           --transferMetric-----> the metric at the subdivision's vertices
 //         --farthestPointSampling--> samples + Voronoi cells          (one FastMarcher for
 //         --geodesicDelaunay-------> valid mesh of the input's topology  both stages)
-//         --relaxOnSurface---------> same mesh, better angles
+//           (if its repair added samples: sampled again with fewer, up to kMaxSamplingRounds
+//            samplings, the valid result closest to the count asked for kept)
+//         --relaxOnSurface---------> same mesh, better angles (on the input when refined)
 //         --map back---------------> each output vertex's origin on the input (flips undone)
 //         --measure (optional)-----> angles, surface distance both ways
 //
+// On a refined surface the fronts use the intrinsic lengths, saddle seeding and the chord bound
+// (GeodesicSurface::makeMarcher); `refinement` (midpoint subdivision) is not applied on top (the
+// refined surface is already finer than the input where it matters), and sub-vertex placement is
+// off: a point inside a refined face has no exact location on the input without a trace, while
+// every refined vertex has one (its origin), so every sample is a refined vertex and every output
+// vertex a 3D point on the input. The Voronoi dual reads only the refined mesh's positions (the
+// 3D points of its vertices' origins) for its geometric tests. On a well-shaped input nothing
+// changes: the fronts run on the (subdivided) input with the engine's defaults, as before.
+//
 // Cost: the sampling, O(V log V log n) for V front vertices and n samples, dominates; the
-// triangulation and relaxation are O(V + n); the measure is O(V + F) distance queries.
+// refinement (when Auto refines) O((V + points) log V); the triangulation and relaxation are
+// O(V + n); the measure is O(V + F) distance queries.
 // Nothing is written into the input.
 #pragma once
 
@@ -22,6 +39,7 @@
 #include "core/base/status.h"
 #include "core/field/adaptive_metric.h"
 #include "core/geodesic/farthest_point_sampling.h"
+#include "core/geodesic/geodesic_surface.h"
 #include "core/geodesic/metric.h"
 #include "core/measure/evaluation.h"
 #include "core/mesh/surface_point.h"
@@ -37,6 +55,9 @@ struct SurfaceRemeshParams {
   static constexpr double kDefaultTargetFraction = 0.1;    ///< default target: this share of the input's vertices
   static constexpr int kMinDefaultTarget = 4;              ///< ... but at least this many
   static constexpr double kDefaultSpacingFraction = 0.02;  ///< default spacing: this share of the bbox diagonal
+  /// Samplings at most when the repair of the triangulation adds samples: the first, then redone
+  /// with fewer samples to land at the count asked for (sampleToCount in remesh_surface.cpp).
+  static constexpr int kMaxSamplingRounds = 4;
 
   /// The default target count for an input of `vertexCount` vertices (10%, at least 4).
   static int defaultTargetCount(int vertexCount);
@@ -49,8 +70,12 @@ struct SurfaceRemeshParams {
   DelaunayParams triangulation;  ///< repair rounds and the final Delaunay flips
   RelaxationParams relaxation;   ///< tangential relaxation (iterations 0 to kMaxRelaxationRounds)
   /// Midpoint subdivisions of the input the fronts run on (0 to kMaxRefinement): finer cells and
-  /// samples between input vertices, about 4x the time per level.
+  /// samples between input vertices, about 4x the time per level. Not applied when the fronts run
+  /// on the intrinsic Delaunay refinement (`surface`).
   int refinement = 0;
+  /// The surface the fronts run on: the input, or (Auto: where its triangles are poor, e.g. CAD
+  /// exports with slivers) its intrinsic Delaunay refinement (geodesic_surface.h).
+  GeodesicSurfaceParams surface;
   /// Also measure the output: angle statistics and the surface distance to the input both ways
   /// (the figures of the filters' log).
   bool measure = true;
@@ -66,7 +91,7 @@ struct RemeshMeasures {
 
 /// Wall time of each stage, in seconds (the benchmarks report them; the sum is about the whole call).
 struct RemeshStageTimes {
-  double prepare = 0.0;  ///< orientation, subdivision, metric transfer
+  double prepare = 0.0;  ///< orientation, intrinsic refinement or subdivision, metric transfer
   double engine = 0.0;   ///< the FastMarcher's construction
   double sampling = 0.0;
   double triangulation = 0.0;  ///< geodesic Delaunay with its repair and flips
@@ -79,8 +104,18 @@ struct SurfaceRemeshResult {
   std::vector<SurfacePoint> origin;  ///< per output vertex, where it lies on the input
   /// Per input vertex, its Voronoi cell: the output vertex it belongs to.
   std::vector<int> cell;
-  int frontVertices = 0;        ///< vertices of the mesh the fronts ran on (input subdivided `refinement` times)
-  int sampledCount = 0;         ///< samples placed by farthest-point sampling
+  int frontVertices = 0;  ///< vertices of the mesh the fronts ran on (refined, or subdivided `refinement` times)
+  /// The count asked for (sampling.targetCount; 0 = spacing only) and how it was reached: when the
+  /// repair added samples, the sampling was redone with fewer (at most kMaxSamplingRounds
+  /// samplings) and the valid output closest to the count kept, preferring outputs without
+  /// crossing faces (selfIntersectingFaces), from `sampledAsked` samples asked of the sampling.
+  /// fewestCount: the fewest output vertices of these samplings' outputs without crossing faces
+  /// (0 if none had none); above countAsked, the fewest this surface reached at these settings.
+  int countAsked = 0;
+  int samplingRounds = 0;
+  int sampledAsked = 0;
+  int fewestCount = 0;
+  int sampledCount = 0;         ///< samples placed by farthest-point sampling (of the kept sampling)
   double coveringRadius = 0.0;  ///< largest distance to a sample after the sampling (a travel time with a metric)
   int addedSamples = 0;         ///< samples the repair of the triangulation added
   int droppedSamples = 0;       ///< samples inside faces left out (nearest to no vertex)
@@ -88,7 +123,11 @@ struct SurfaceRemeshResult {
   int flippedEdges = 0;  ///< edges flipped to make the triangulation locally Delaunay
   RelaxationResult relaxation;
   int reorientedFaces = 0;  ///< input faces the work copy flipped to orient the surface coherently
-  int looseFaces = 0;       ///< input faces that share no edge with another face
+  /// Whether the fronts ran on the intrinsic Delaunay refinement of the input (geodesic_surface.h:
+  /// Auto refines CAD-like meshes with slivers or caps), and the points it inserted.
+  bool refinedSurface = false;
+  int refinedPoints = 0;
+  int looseFaces = 0;  ///< input faces that share no edge with another face
   /// True when loose faces are at least a tenth of the input: a triangle soup (an STL read
   /// without merging vertices), each face its own component, which comes back unchanged.
   bool looksLikeTriangleSoup = false;

@@ -320,7 +320,9 @@ TEST(Meshlabserver, AdaptiveCurvatureRemeshOfFandisk) {
   EXPECT_EQ(result->topology.components, 1);
   EXPECT_EQ(result->topology.genus, 0);
   EXPECT_EQ(result->topology.boundaryEdges, 0);
-  EXPECT_EQ(result->vertexCount(), 647 + test::numberBefore(run.output, "added to make the triangulation valid"));
+  // 647 asked; the count search (issue 20) may redo the sampling with fewer samples.
+  EXPECT_EQ(result->vertexCount(), test::numberBefore(run.output, "by farthest-point sampling") +
+                                       test::numberBefore(run.output, "added to make the triangulation valid"));
 }
 
 // Any filter that writes quality drives the adaptive remeshing: curvature into quality, then

@@ -356,6 +356,20 @@ TEST(IntrinsicRefinement, Bunny00EdgesAreGeodesics) {
   expectGeodesicLengths(input, *r, 1);  // one source: CGAL's exact geodesics are slow on 37k vertices
 }
 
+// Needles and zero-area faces on a curved mesh (test::withBadTriangles): traces that cross a face
+// of zero area (its two short edges on the long one's line) leave it through the edge that holds
+// the crossing. They used to leave through the other short edge's end, placing points up to an
+// edge away from where their lengths say (an edge of 6e-5 between origins 1e-2 apart).
+TEST(IntrinsicRefinement, Bunny00WithNeedlesAndZeroAreaFacesEdgesAreGeodesics) {
+  int zeroArea = 0;
+  const TriMesh input = test::withBadTriangles(test::loadRealMesh("bunny00.off"), &zeroArea);
+  ASSERT_GT(zeroArea, 100);
+  const Expected<RefinedSurface> r = refineTimed("bunny00.off with needles and zero-area faces", input);
+  ASSERT_TRUE(r) << r.status().message;
+  expectValidRefinement(input, *r);
+  expectGeodesicLengths(input, *r, 1);
+}
+
 class IntrinsicRefinementDataSet : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(IntrinsicRefinementDataSet, KeepsTheSurfaceAndReachesTheBound) {

@@ -10,6 +10,9 @@ namespace {
 /// A crossing this close to an end of the edge (relative to its length) is at that vertex.
 constexpr double kSnap = 1e-9;
 constexpr int kAllEdges = 7;
+/// A crossing this far beyond an end of the edge (relative to its length) is still on it
+/// (rounding); farther, it is on the edge's line only.
+constexpr double kOnSegment = 1e-6;
 
 Vec2 rotated(const Vec2& u, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -93,8 +96,13 @@ void Walker::startInFace(int f, const Vec3& bary, const Vec2& direction) {
 }
 
 int Walker::exitEdge(double* t) const {
-  int best = -1;
-  *t = std::numeric_limits<double>::infinity();
+  // The nearest edge line the direction crosses outwards. In a face of zero area two edges lie on
+  // one line and are both crossed at once (t = 0): the one whose segment holds the crossing is the
+  // way out; the other's end would be taken for a vertex the line runs into, up to an edge's
+  // length away. So crossings off their segment count only when no edge has one on it.
+  int best = -1, bestOff = -1;
+  double tOff = std::numeric_limits<double>::infinity();
+  *t = tOff;
   for (int i = 0; i < 3; ++i) {
     if (!(allowed_ & (1 << i))) continue;
     const Vec2& a = p_[(i + 1) % 3];
@@ -102,12 +110,19 @@ int Walker::exitEdge(double* t) const {
     const double rate = cross2(e, direction_);  // < 0: moving out across this edge's line
     if (!(rate < 0.0)) continue;
     const double ti = std::max(0.0, cross2(e, point_ - a)) / -rate;
-    if (ti < *t) {
+    const double len2 = e.squaredNorm();
+    const double s = len2 > 0.0 ? (point_ + ti * direction_ - a).dot(e) / len2 : 0.0;
+    const bool onSegment = s >= -kOnSegment && s <= 1.0 + kOnSegment;
+    if (onSegment && ti < *t) {
       *t = ti;
       best = i;
+    } else if (!onSegment && ti < tOff) {
+      tOff = ti;
+      bestOff = i;
     }
   }
-  return best;
+  if (best < 0) *t = tOff;
+  return best >= 0 ? best : bestOff;
 }
 
 TraceResult Walker::stopHere(TraceStop stop, const Vec2& at) const {

@@ -47,7 +47,7 @@ FastMarchingResult fieldAtInputVertices(const FastMarcher& marcher, int n) {
 FastMarcher GeodesicSurface::makeMarcher() const {
   if (!refined) {  // boundary seeding only: a few vertices, no measurable cost
     FastMarcher marcher(*input, metric);
-    marcher.setSaddleSeeding(true, /*boundaryOnly=*/true);
+    if (input->topology.boundaryEdges > 0) marcher.setSaddleSeeding(true, /*boundaryOnly=*/true);
     marcher.setChordBound(true);
     return marcher;
   }

@@ -1,11 +1,12 @@
 #include "filter_geodesic_remesh/adaptive_remesh_filter.h"
 #include "filter_geodesic_remesh/fast_marching_filter.h"
 #include "filter_geodesic_remesh/filter_spec.h"
+#include "filter_geodesic_remesh/segmentation_filter.h"
 #include "filter_geodesic_remesh/uniform_remesh_filter.h"
 
 namespace gr::filters {
 
-enum FilterId { kFastMarching = 0, kUniformRemesh = 1, kAdaptiveRemesh = 2, kTotalCurvature = 3 };
+enum FilterId { kFastMarching = 0, kUniformRemesh = 1, kAdaptiveRemesh = 2, kTotalCurvature = 3, kSegmentation = 4 };
 
 const auto kQualityAndColorClass =
     MeshFilterInterface::FilterClass(MeshFilterInterface::Quality + MeshFilterInterface::VertexColoring);
@@ -49,6 +50,18 @@ const std::vector<FilterSpec>& filterTable() {
        "remeshing.<br>See D. Cohen-Steiner and J.-M. Morvan, <i>Restricted Delaunay triangulations and normal "
        "cycle</i>, SoCG 2003, and G. Peyr&eacute; and L. Cohen, IJCV 2006, &sect;3.4.",
        kQualityAndColorClass, kWritesQualityAndColor, declareTotalCurvature, applyTotalCurvature},
+      {kSegmentation, "Segmentation: Geodesic Centroidal Tessellation",
+       "Cuts the surface into compact regions of even area that are topological disks (ready to be flattened): "
+       "farthest-point seeds, then geodesic Lloyd iterations that move each seed to the intrinsic centre of mass "
+       "of its geodesic Voronoi region. With Feature alignment the fronts slow down on sharp edges (the "
+       "edge-attractive speed from the total curvature, or from the vertex quality), so region boundaries follow "
+       "them. A region that is not a disk (a handle, a ring around a tube, a closed component) gets another seed "
+       "until all are disks. Writes the region index into the face quality and one colour per region into the "
+       "face colour, selects the faces on region boundaries, and can put each region on its own layer.<br>See "
+       "G. Peyr&eacute; and L. Cohen, <i>Geodesic Remeshing Using Front Propagation</i>, IJCV 2006, &sect;4.2.",
+       MeshFilterInterface::FilterClass(MeshFilterInterface::FaceColoring + MeshFilterInterface::Quality),
+       MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR | MeshModel::MM_FACEFLAGSELECT, declareSegmentation,
+       applySegmentation},
   };
   return table;
 }

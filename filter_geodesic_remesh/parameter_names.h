@@ -19,4 +19,8 @@ constexpr const char *kRefinement = "Refinement", *kRelaxation = "Relaxation", *
 constexpr const char *kField = "Field", *kMapping = "Mapping", *kStrength = "Strength",
                      *kCurvatureRadius = "CurvatureRadius";
 
+// Segmentation: Geodesic Centroidal Tessellation (also Seed and UseQualityAsSpeed above)
+constexpr const char *kRegions = "Regions", *kIterations = "Iterations", *kFeatureAlignment = "FeatureAlignment",
+                     *kSplitIntoLayers = "SplitIntoLayers";
+
 }  // namespace gr::filters::param

@@ -25,6 +25,7 @@
 #include "core/measure/evaluation.h"
 #include "core/mesh/vcg_mesh.h"
 #include "core/remesh/remesh_surface.h"
+#include "core/segment/geodesic_segmentation.h"
 #include "filter_geodesic_remesh/fast_marching_filter.h"
 #include "filter_geodesic_remesh/filter_geodesic_remesh.h"
 #include "filter_geodesic_remesh/filter_support.h"
@@ -76,6 +77,7 @@ struct Snapshot {
       colorsAndFlags.push_back(*reinterpret_cast<const unsigned*>(&v.cC()[0]));
       colorsAndFlags.push_back(unsigned(v.Flags()));
     }
+    for (const auto& f : mm.cm.face) colorsAndFlags.push_back(unsigned(f.Flags()));
   }
   bool operator==(const Snapshot& o) const {
     // Compare bit patterns so NaN coordinates compare equal to themselves.
@@ -994,6 +996,109 @@ TEST_F(FilterInProcess, EveryFilterIgnoresDeletedElements) {
   }
 }
 
+// --- Segmentation ------------------------------------------------------------------------------
+
+/// The regions in the face quality: every one an edge-connected topological disk (recounted), as
+/// many as the log's "N regions (A asked, B added" says, and A + B = N.
+void expectDiskRegions(const MeshModel& mm, const std::string& log) {
+  const int regions = test::numberBefore(log, "regions (");
+  const int asked = test::numberBefore(log, "asked,");
+  const int added = test::numberBefore(log, "added to make every region a disk");
+  ASSERT_GT(regions, 0) << log;
+  EXPECT_EQ(regions, asked + added);
+  std::vector<std::vector<Tri>> faces(regions);
+  const CVertexO* const first = &mm.cm.vert[0];
+  std::vector<int> compact(mm.cm.vert.size(), -1);
+  int n = 0;
+  for (size_t i = 0; i < mm.cm.vert.size(); ++i)
+    if (!mm.cm.vert[i].IsD()) compact[i] = n++;
+  for (const auto& f : mm.cm.face) {
+    if (f.IsD()) continue;
+    const int r = static_cast<int>(f.cQ());
+    ASSERT_GE(r, 0);
+    ASSERT_LT(r, regions);
+    faces[r].push_back({compact[f.cV(0) - first], compact[f.cV(1) - first], compact[f.cV(2) - first]});
+  }
+  for (int r = 0; r < regions; ++r) {
+    ASSERT_FALSE(faces[r].empty()) << "region " << r << " has no face";
+    const test::Recount rc = test::recount(faces[r], n);
+    EXPECT_TRUE(rc.components == 1 && rc.eulerCharacteristic == 1 && rc.boundaryLoops == 1 && rc.simpleBoundary &&
+                rc.manifoldVertices)
+        << "region " << r << ": components " << rc.components << ", chi " << rc.eulerCharacteristic << ", loops "
+        << rc.boundaryLoops;
+  }
+}
+
+TEST_F(FilterInProcess, SegmentationWritesDiskRegionsAsTheCoreDoes) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  use("Segmentation: Geodesic Centroidal Tessellation");
+  declare(*mm);
+  const SegmentationParams defaults;
+  EXPECT_EQ(params.getInt(filters::param::kRegions), defaults.regions);
+  EXPECT_EQ(params.getInt(filters::param::kIterations), defaults.lloyd.iterations);
+  EXPECT_FLOAT_EQ(params.getFloat(filters::param::kFeatureAlignment), float(defaults.featureAlignment));
+  EXPECT_EQ(params.getInt(filters::param::kSeed), int(defaults.seed));
+  params.setValue(filters::param::kRegions, IntValue(20));
+  params.setValue(filters::param::kSplitIntoLayers, BoolValue(true));
+  const size_t layers = doc.meshList.size();
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_TRUE(mm->hasDataMask(MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR));
+  expectDiskRegions(*mm, logText());
+  // The same regions as the core's, with the same parameters.
+  SegmentationParams p;
+  p.regions = 20;
+  const Expected<SegmentationResult> core = segmentSurface(fandisk, {}, p);
+  ASSERT_TRUE(core);
+  ASSERT_EQ(static_cast<int>(mm->cm.face.size()), fandisk.faceCount());
+  int selected = 0, cut = 0;
+  for (int f = 0; f < fandisk.faceCount(); ++f) {
+    EXPECT_EQ(static_cast<int>(mm->cm.face[f].cQ()), core->faceRegion[f]) << "face " << f;
+    bool onBoundary = false;
+    for (int c = 3 * f; c < 3 * f + 3; ++c) {
+      const int o = fandisk.oppositeCorner[c];
+      onBoundary = onBoundary || (o >= 0 && core->faceRegion[TriMesh::face(o)] != core->faceRegion[f]);
+    }
+    cut += onBoundary;
+    selected += mm->cm.face[f].IsS();
+    EXPECT_EQ(mm->cm.face[f].IsS(), onBoundary) << "face " << f;
+  }
+  EXPECT_GT(selected, 0);
+  EXPECT_EQ(selected, cut);
+  // One layer per region, holding that region's faces.
+  ASSERT_EQ(doc.meshList.size(), layers + static_cast<size_t>(core->regions));
+  int layerFaces = 0;
+  for (const MeshModel* layer : doc.meshList)
+    if (layer != mm) layerFaces += layer->cm.fn;
+  EXPECT_EQ(layerFaces, fandisk.faceCount());
+  EXPECT_NE(logText().find("Time:"), std::string::npos);
+}
+
+TEST_F(FilterInProcess, SegmentationBadInputLeavesTheDocumentAlone) {
+  const TriMesh grid = test::planeGrid(6);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  use("Segmentation: Geodesic Centroidal Tessellation");
+  declare(*mm);
+  params.setValue(filters::param::kRegions, IntValue(0));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "Regions");
+  params.setValue(filters::param::kRegions, IntValue(100000));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "Regions");
+  params.setValue(filters::param::kRegions, IntValue(4));
+  params.setValue(filters::param::kIterations, IntValue(-1));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "Iterations");
+  params.setValue(filters::param::kIterations, IntValue(2));
+  params.setValue(filters::param::kFeatureAlignment, FloatValue(-1.0f));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "feature alignment");
+  params.setValue(filters::param::kFeatureAlignment, FloatValue(1.0f));
+  params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "quality");
+  // Zero speed from the quality: the quality is the field of an Attractive speed, so a negative
+  // value is refused, naming the vertex.
+  mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+  for (auto& v : mm->cm.vert) v.Q() = -1.0f;
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "vertex");
+}
+
 // --- Every filter over every mesh of the data set ----------------------------------------------
 
 /// The data set's mesh files that loadTriMesh reads as triangle meshes (point clouds left out).
@@ -1019,7 +1124,8 @@ TEST_P(FilterDataSetSweep, EveryFilterSucceedsOrFailsCleanly) {
   mm->cm.vert[0].SetS();
   for (const char* filter :
        {"Geodesic Distance: Fast Marching from Selected Vertices", "Remeshing: Geodesic Uniform",
-        "Remeshing: Geodesic Adaptive", "Compute Total Curvature (Normal Cycle) into Vertex Quality"}) {
+        "Remeshing: Geodesic Adaptive", "Compute Total Curvature (Normal Cycle) into Vertex Quality",
+        "Segmentation: Geodesic Centroidal Tessellation"}) {
     SCOPED_TRACE(filter);
     use(filter);
     doc.setCurrent(mm);
@@ -1032,6 +1138,10 @@ TEST_P(FilterDataSetSweep, EveryFilterSucceedsOrFailsCleanly) {
       EXPECT_NE(logText().find(message), std::string::npos) << "log:\n" << logText();
       EXPECT_TRUE(Snapshot(*mm) == before) << "a failed filter changed the mesh: " << message;
       EXPECT_EQ(doc.meshList.size(), layers) << "a failed filter added a layer";
+      continue;
+    }
+    if (std::string(filter).rfind("Segmentation", 0) == 0) {
+      expectDiskRegions(*mm, logText());
       continue;
     }
     if (std::string(filter).rfind("Remeshing", 0) != 0) continue;

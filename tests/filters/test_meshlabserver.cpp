@@ -19,6 +19,7 @@
 #include "core/measure/evaluation.h"
 #include "core/mesh/vcg_convert.h"
 #include "core/mesh/vcg_mesh.h"
+#include <wrap/io_trimesh/import_ply.h>
 #include "tests/oracles/geodesic_oracles.h"
 #include "tests/support/cad_meshes.h"
 #include "tests/support/test_support.h"
@@ -306,6 +307,53 @@ INSTANTIATE_TEST_SUITE_P(Meshes, UniformAcceptance,
                          });
 
 // Curvature-adaptive remeshing through meshlabserver: valid output, and the field logged.
+// Segmentation through meshlabserver: resources/segmentation_50.mlx on fandisk, saved with face
+// quality (the region) and colour; every region recounted here as an edge-connected disk, as many
+// as the log says (asked + added), each with its own colour.
+class SegFace;
+class SegVertex;
+struct SegTypes : public vcg::UsedTypes<vcg::Use<SegVertex>::AsVertexType, vcg::Use<SegFace>::AsFaceType> {};
+class SegVertex : public vcg::Vertex<SegTypes, vcg::vertex::Coord3f, vcg::vertex::BitFlags> {};
+class SegFace : public vcg::Face<SegTypes, vcg::face::VertexRef, vcg::face::Qualityf, vcg::face::Color4b,
+                                 vcg::face::BitFlags> {};
+class SegMesh : public vcg::tri::TriMesh<std::vector<SegVertex>, std::vector<SegFace>> {};
+
+TEST(Meshlabserver, SegmentationOfFandiskIntoDiskRegions) {
+  const std::string out = kOut + "fandisk_segmentation.ply";
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + test::meshPath("fandisk.off") + "' -o '" + out + "' -m fq fc -s '" +
+                                      kResources + "segmentation_50.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const int regions = test::numberBefore(run.output, "regions (");
+  const int asked = test::numberBefore(run.output, "asked,");
+  const int added = test::numberBefore(run.output, "added to make every region a disk");
+  EXPECT_EQ(asked, 50) << run.output;
+  EXPECT_EQ(regions, asked + added);
+  EXPECT_NE(run.output.find("Time:"), std::string::npos);
+  SegMesh m;
+  int mask = 0;
+  ASSERT_EQ(vcg::tri::io::ImporterPLY<SegMesh>::Open(m, out.c_str(), mask), 0);
+  ASSERT_TRUE(mask & vcg::tri::io::Mask::IOM_FACEQUALITY) << "no face quality in the output";
+  std::vector<std::vector<Tri>> faces(std::max(regions, 0));
+  std::vector<std::set<unsigned>> colors(std::max(regions, 0));
+  for (const auto& f : m.face) {
+    const int r = static_cast<int>(f.cQ());
+    ASSERT_GE(r, 0);
+    ASSERT_LT(r, regions);
+    faces[r].push_back({int(f.cV(0) - &m.vert[0]), int(f.cV(1) - &m.vert[0]), int(f.cV(2) - &m.vert[0])});
+    colors[r].insert(*reinterpret_cast<const unsigned*>(&f.cC()[0]));
+  }
+  std::set<unsigned> distinct;
+  for (int r = 0; r < regions; ++r) {
+    ASSERT_FALSE(faces[r].empty()) << "region " << r;
+    const test::Recount rc = test::recount(faces[r], m.vn);
+    EXPECT_TRUE(rc.components == 1 && rc.eulerCharacteristic == 1 && rc.boundaryLoops == 1) << "region " << r;
+    EXPECT_EQ(colors[r].size(), 1u) << "region " << r << " has several colours";
+    distinct.insert(*colors[r].begin());
+  }
+  EXPECT_EQ(static_cast<int>(distinct.size()), regions);
+}
+
 TEST(Meshlabserver, AdaptiveCurvatureRemeshOfFandisk) {
   const std::string out = kOut + "fandisk_adaptive.ply";
   std::remove(out.c_str());

@@ -1,0 +1,331 @@
+#include "core/segment/geodesic_segmentation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <utility>
+
+#include "core/geodesic/farthest_point_sampling.h"
+
+namespace gr {
+namespace {
+
+/// Rounds of giving stray pieces to their neighbours (each round at least halves them in practice).
+constexpr int kStrayRounds = 16;
+
+/// Faces grouped by region (CSR): faces of region r are order[begin[r] .. begin[r + 1]).
+struct FacesByRegion {
+  std::vector<int> begin, order;
+};
+
+FacesByRegion groupFaces(const std::vector<int>& faceRegion, int regions) {
+  FacesByRegion g;
+  g.begin.assign(regions + 1, 0);
+  for (int r : faceRegion)
+    if (r >= 0 && r < regions) ++g.begin[r + 1];
+  for (int r = 0; r < regions; ++r) g.begin[r + 1] += g.begin[r];
+  g.order.resize(g.begin[regions]);
+  std::vector<int> fill(g.begin.begin(), g.begin.end() - 1);
+  for (int f = 0; f < static_cast<int>(faceRegion.size()); ++f)
+    if (faceRegion[f] >= 0 && faceRegion[f] < regions) g.order[fill[faceRegion[f]]++] = f;
+  return g;
+}
+
+/// Per face, the edge-connected piece of its region it belongs to (pieces numbered from 0).
+std::vector<int> piecesOf(const TriMesh& mesh, const std::vector<int>& faceRegion, int* count) {
+  std::vector<int> piece(mesh.faceCount(), -1), stack;
+  int pieces = 0;
+  for (int f0 = 0; f0 < mesh.faceCount(); ++f0) {
+    if (piece[f0] >= 0 || faceRegion[f0] < 0) continue;
+    piece[f0] = pieces;
+    stack.push_back(f0);
+    while (!stack.empty()) {
+      const int f = stack.back();
+      stack.pop_back();
+      for (int c = 3 * f; c < 3 * f + 3; ++c) {
+        const int o = mesh.oppositeCorner[c];
+        if (o < 0) continue;
+        const int g = TriMesh::face(o);
+        if (piece[g] < 0 && faceRegion[g] == faceRegion[f]) {
+          piece[g] = pieces;
+          stack.push_back(g);
+        }
+      }
+    }
+    ++pieces;
+  }
+  *count = pieces;
+  return piece;
+}
+
+/// The region of each input face from its vertices' cells: the majority; three different cells
+/// (or two and an unreached vertex): the cell of the vertex nearest its seed.
+std::vector<int> labelFaces(const TriMesh& mesh, const std::vector<int>& cell, const std::vector<double>& distance) {
+  std::vector<int> label(mesh.faceCount(), -1);
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    const int a = cell[t[0]], b = cell[t[1]], c = cell[t[2]];
+    if (a >= 0 && (a == b || a == c)) {
+      label[f] = a;
+    } else if (b >= 0 && b == c) {
+      label[f] = b;
+    } else {
+      double best = kUnreached;
+      for (int v : t)
+        if (cell[v] >= 0 && distance[v] < best) {
+          best = distance[v];
+          label[f] = cell[v];
+        }
+    }
+  }
+  return label;
+}
+
+/// Gives every stray piece of a region (not its largest) to the neighbouring region it shares the
+/// most edges with. Returns the faces moved; pieces with no neighbouring region (a component of
+/// the mesh all in one region, or unlabelled faces) are left and listed in `isolated` (a face of each).
+int mergeStrayPieces(const TriMesh& mesh, std::vector<int>& faceRegion, int regions, std::vector<int>* isolated) {
+  int moved = 0;
+  for (int round = 0; round < kStrayRounds; ++round) {
+    int pieces = 0;
+    const std::vector<int> piece = piecesOf(mesh, faceRegion, &pieces);
+    std::vector<int> size(pieces, 0), largest(regions, -1);
+    for (int f = 0; f < mesh.faceCount(); ++f)
+      if (piece[f] >= 0) ++size[piece[f]];
+    for (int f = 0; f < mesh.faceCount(); ++f) {
+      const int r = faceRegion[f];
+      if (r >= 0 && (largest[r] < 0 || size[piece[f]] > size[largest[r]])) largest[r] = piece[f];
+    }
+    // Per stray piece, the neighbouring region it shares the most edges with.
+    std::vector<std::vector<std::pair<int, int>>> shared(pieces);  // (region, edges)
+    for (int f = 0; f < mesh.faceCount(); ++f) {
+      if (piece[f] < 0 || largest[faceRegion[f]] == piece[f]) continue;
+      for (int c = 3 * f; c < 3 * f + 3; ++c) {
+        const int o = mesh.oppositeCorner[c];
+        if (o < 0) continue;
+        const int r = faceRegion[TriMesh::face(o)];
+        if (r < 0 || r == faceRegion[f]) continue;
+        auto& list = shared[piece[f]];
+        auto it = std::find_if(list.begin(), list.end(), [r](const auto& e) { return e.first == r; });
+        if (it == list.end()) list.emplace_back(r, 1);
+        else ++it->second;
+      }
+    }
+    std::vector<int> target(pieces, -1);
+    for (int p = 0; p < pieces; ++p)
+      if (!shared[p].empty())
+        target[p] = std::max_element(shared[p].begin(), shared[p].end(), [](const auto& x, const auto& y) {
+                      return x.second < y.second || (x.second == y.second && x.first > y.first);
+                    })->first;
+    int movedNow = 0;
+    for (int f = 0; f < mesh.faceCount(); ++f)
+      if (piece[f] >= 0 && largest[faceRegion[f]] != piece[f] && target[piece[f]] >= 0) {
+        faceRegion[f] = target[piece[f]];
+        ++movedNow;
+      }
+    moved += movedNow;
+    if (movedNow == 0) {
+      isolated->clear();
+      std::vector<char> listed(pieces, 0);
+      for (int f = 0; f < mesh.faceCount(); ++f)
+        if (piece[f] >= 0 && largest[faceRegion[f]] != piece[f] && !listed[piece[f]]) {
+          listed[piece[f]] = 1;
+          isolated->push_back(f);
+        }
+      break;
+    }
+  }
+  for (int f = 0; f < mesh.faceCount(); ++f)
+    if (faceRegion[f] < 0) isolated->push_back(f);
+  return moved;
+}
+
+Status checkSegmentationInput(const TriMesh& mesh, const std::vector<double>& values, const SegmentationParams& p) {
+  if (mesh.faceCount() == 0) return invalidInput("segmentation: the mesh has no faces");
+  if (!mesh.topology.isManifold())
+    return nonManifold("segmentation: the mesh is not manifold (" + std::to_string(mesh.topology.nonManifoldEdges) +
+                       " edges, " + std::to_string(mesh.topology.nonManifoldVertices) +
+                       " vertices): regions could not be disks; clean it first");
+  const int inFaces = mesh.vertexCount() - mesh.topology.isolatedVertices;
+  if (p.regions < 1 || p.regions > inFaces)
+    return invalidInput("segmentation: Regions must be between 1 and the " + std::to_string(inFaces) +
+                        " vertices in faces (asked " + std::to_string(p.regions) + ")");
+  if (p.lloyd.iterations < 0 || p.iterationsAfterAdding < 0 || p.maxDiskRounds < 0)
+    return invalidInput("segmentation: Iterations must be >= 0");
+  if (!std::isfinite(p.featureAlignment) || p.featureAlignment < 0.0)
+    return invalidInput("segmentation: the feature alignment must be finite and >= 0");
+  if (p.featureAlignment > 0.0 && p.speedField == AdaptiveField::VertexQuality &&
+      static_cast<int>(values.size()) != mesh.vertexCount())
+    return invalidInput("segmentation: the speed field needs one value per vertex");
+  return Status::ok();
+}
+
+/// The metric of the segmentation: uniform (mu = 0) or the Attractive speed of the field.
+Expected<Metric> segmentationMetric(const TriMesh& mesh, const std::vector<double>& values,
+                                    const SegmentationParams& p, SegmentationResult* out, Progress progress) {
+  if (p.featureAlignment == 0.0) return Metric::uniform();
+  AdaptiveMetricParams a;
+  a.field = p.speedField;
+  a.speed.mapping = SpeedMapping::Attractive;
+  a.speed.strength = p.featureAlignment;
+  a.curvature.radius = p.curvatureRadius;
+  Expected<AdaptiveMetricResult> m = adaptiveMetric(mesh, values, a, progress);
+  if (!m) return m.status();
+  out->curvatureRadius = m->curvatureRadius;
+  out->speedFallback = m->speed.fallback;
+  return m->speed.metric;
+}
+
+/// Seeds to add after a labelling: one per region that is not a disk (at its vertex farthest from
+/// the seeds) and one per isolated piece; the seeds of empty regions re-placed. Returns the seeds
+/// added; *nonDisk receives the regions that are not disks.
+int seedsForNonDisks(const TriMesh& mesh, const std::vector<int>& faceRegion, const std::vector<double>& distance,
+                     const std::vector<int>& isolated, std::vector<SurfacePoint>& seeds, int* nonDisk, int* replaced) {
+  const int regions = static_cast<int>(seeds.size());
+  const std::vector<RegionTopology> topo = regionTopology(mesh, faceRegion, regions);
+  std::vector<int> farthest(regions, -1);
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const int r = faceRegion[f];
+    if (r < 0) continue;
+    for (int v : mesh.triangles[f])
+      if (farthest[r] < 0 || distance[v] > distance[farthest[r]]) farthest[r] = v;
+  }
+  int added = 0;
+  *nonDisk = 0;
+  for (int r = 0; r < regions; ++r) {
+    if (topo[r].faces == 0) {  // lost its faces to its neighbours: its seed goes to the farthest vertex
+      const int v = static_cast<int>(std::max_element(distance.begin(), distance.end(),
+                                                      [](double a, double b) {
+                                                        return (std::isfinite(a) ? a : -1.0) < (std::isfinite(b) ? b : -1.0);
+                                                      }) -
+                                     distance.begin());
+      seeds[r] = SurfacePoint::atVertex(v);
+      ++*replaced;
+    } else if (!topo[r].isDisk()) {
+      ++*nonDisk;
+      seeds.push_back(SurfacePoint::atVertex(farthest[r]));
+      ++added;
+    }
+  }
+  for (int f : isolated) {
+    seeds.push_back(SurfacePoint::atVertex(mesh.triangles[f][0]));
+    ++added;
+  }
+  return added;
+}
+
+}  // namespace
+
+std::vector<RegionTopology> regionTopology(const TriMesh& mesh, const std::vector<int>& faceRegion, int regions) {
+  std::vector<RegionTopology> topo(regions);
+  const FacesByRegion g = groupFaces(faceRegion, regions);
+  int pieceCount = 0;
+  const std::vector<int> piece = piecesOf(mesh, faceRegion, &pieceCount);
+  std::vector<int> stamp(mesh.vertexCount(), -1), parent(mesh.vertexCount()), boundaryDegree(mesh.vertexCount(), 0);
+  std::vector<char> pieceSeen(pieceCount, 0);
+  const auto root = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (int r = 0; r < regions; ++r) {
+    RegionTopology& t = topo[r];
+    int vertices = 0, edges = 0;
+    std::vector<int> boundaryVertices;
+    for (int k = g.begin[r]; k < g.begin[r + 1]; ++k) {
+      const int f = g.order[k];
+      ++t.faces;
+      if (!pieceSeen[piece[f]]) {
+        pieceSeen[piece[f]] = 1;
+        ++t.pieces;
+      }
+      for (int v : mesh.triangles[f])
+        if (stamp[v] != r) {
+          stamp[v] = r;
+          parent[v] = v;
+          boundaryDegree[v] = 0;
+          ++vertices;
+        }
+      for (int c = 3 * f; c < 3 * f + 3; ++c) {
+        const int o = mesh.oppositeCorner[c];
+        const bool inside = o >= 0 && faceRegion[TriMesh::face(o)] == r;
+        if (inside && o < c) continue;  // counted from the other side
+        ++edges;
+        if (inside) continue;
+        const int a = mesh.vertex(TriMesh::next(c)), b = mesh.vertex(TriMesh::prev(c));
+        ++boundaryDegree[a];
+        ++boundaryDegree[b];
+        boundaryVertices.push_back(a);
+        boundaryVertices.push_back(b);
+        parent[root(a)] = root(b);
+      }
+    }
+    t.euler = vertices - edges + t.faces;
+    int loops = 0;
+    bool pinched = false;
+    for (int v : boundaryVertices) {
+      pinched = pinched || boundaryDegree[v] != 2;
+      if (root(v) == v) {
+        ++loops;
+        parent[v] = -1 - v;  // counted: no longer its own root
+      }
+    }
+    t.boundaryLoops = pinched ? -1 : loops;
+  }
+  return topo;
+}
+
+Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vector<double>& values,
+                                            const SegmentationParams& params, Progress progress) {
+  if (Status s = checkSegmentationInput(mesh, values, params); !s) return s;
+  SegmentationResult out;
+  out.regionsAsked = params.regions;
+  Expected<Metric> metric = segmentationMetric(mesh, values, params, &out, progress.sub(0.0, 0.05));
+  if (!metric) return metric.status();
+  Expected<GeodesicSurface> surface = prepareGeodesicSurface(mesh, *metric, params.surface, progress.sub(0.05, 0.1));
+  if (!surface) return surface.status();
+  out.refined = surface->refined;
+  out.insertedPoints = surface->insertedPoints();
+  FastMarcher marcher = surface->makeMarcher();
+  FpsParams fps;
+  fps.targetCount = params.regions;
+  fps.seed = params.seed;
+  fps.boundaryPriority = 1.0;  // seeds are cell centres, not outline samples
+  Expected<FpsResult> sampled = farthestPointSampling(marcher, fps, progress.sub(0.1, 0.15));
+  if (!sampled) return sampled.status();
+  std::vector<SurfacePoint> seeds = sampled->origin;
+  LloydParams lloyd = params.lloyd;
+  for (int round = 0;; ++round) {
+    Expected<LloydResult> relaxed =
+        geodesicLloyd(surface->mesh(), surface->metric, marcher, seeds, lloyd,
+                      progress.sub(0.15 + 0.8 * (1.0 - std::pow(0.5, round)), 0.15 + 0.8 * (1.0 - std::pow(0.5, round + 1))));
+    if (!relaxed) return relaxed.status();
+    if (round == 0) out.energyStart = relaxed->energy.front();
+    out.energyEnd = relaxed->energy.back();
+    out.iterations += relaxed->iterations;
+    out.reseeded += relaxed->reseeded;
+    seeds = relaxed->seeds;
+    // The input's vertices are the surface's first ones: their cells label the input's faces.
+    const std::vector<int> cell(relaxed->cell.begin(), relaxed->cell.begin() + mesh.vertexCount());
+    const std::vector<double> distance(relaxed->distance.begin(), relaxed->distance.begin() + mesh.vertexCount());
+    out.faceRegion = labelFaces(mesh, cell, distance);
+    std::vector<int> isolated;
+    out.strayFacesMoved += mergeStrayPieces(mesh, out.faceRegion, static_cast<int>(seeds.size()), &isolated);
+    int replaced = 0;
+    const int added = seedsForNonDisks(mesh, out.faceRegion, distance, isolated, seeds, &out.nonDiskRegions, &replaced);
+    out.reseeded += replaced;
+    if ((added == 0 && replaced == 0) || round == params.maxDiskRounds ||
+        static_cast<int>(seeds.size()) > surface->mesh().vertexCount()) {
+      if (added > 0) seeds.resize(seeds.size() - added);  // not iterated: not counted
+      break;
+    }
+    out.regionsAdded += added;
+    lloyd.iterations = std::max(params.iterationsAfterAdding, 1);
+  }
+  out.regions = static_cast<int>(seeds.size());
+  out.seedPosition.resize(seeds.size());
+  for (size_t i = 0; i < seeds.size(); ++i) out.seedPosition[i] = seeds[i].position(surface->mesh());
+  return out;
+}
+
+}  // namespace gr

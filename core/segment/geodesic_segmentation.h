@@ -1,0 +1,88 @@
+// Segmentation into compact, feature-aligned regions that are topological disks: a geodesic
+// centroidal tessellation (paper §4.2, conditions C1 and C2), the first stage of the atlas.
+//
+//   mesh --adaptiveMetric (total curvature or a given field, Attractive: the paper's F2 "edge
+//          attractive" speed 1/(1 + mu tau/s), which freezes fronts at sharp edges)--> metric
+//        --prepareGeodesicSurface (its intrinsic refinement where the triangles are poor)
+//        --farthestPointSampling (`regions` seeds) --geodesicLloyd (`iterations`)--> cells
+//        --faces labelled by their vertices' cells (the majority; three different: the vertex
+//          nearest its seed), each label's stray pieces given to the neighbour they share most
+//          edges with, so every region is one edge-connected piece
+//        --a region that is not a disk (Euler characteristic 1, one boundary loop: a handle, a
+//          ring around a tube, an input hole inside it, a whole closed component) gets a seed
+//          at its vertex farthest from its own seed, and the Lloyd iteration goes on with one
+//          more region; until every region is a disk (`regionsAdded` counts the seeds added)
+//
+// With mu = 0 (featureAlignment = 0) the metric is uniform: plain geodesic Voronoi cells.
+// Cost: the metric O(V k) (curvature balls), Lloyd (geodesic_lloyd.h) about (1 + 2 * steps)
+// fronts per iteration, the labelling and the disk check O(V + F) per round.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/base/progress.h"
+#include "core/base/status.h"
+#include "core/field/adaptive_metric.h"
+#include "core/geodesic/geodesic_lloyd.h"
+#include "core/geodesic/geodesic_surface.h"
+#include "core/mesh/tri_mesh.h"
+
+namespace gr {
+
+/// Options of the segmentation (Peyré & Cohen 2006, §4.2).
+struct SegmentationParams {
+  int regions = 50;  ///< seeds of the farthest-point sampling (>= 1, at most the vertices)
+  /// The Lloyd iteration (20 iterations; the mass element is the surface's area).
+  LloydParams lloyd;
+  /// Which field sets the speed: TotalCurvature (feature alignment, default) or VertexQuality
+  /// (a given per-vertex field, e.g. MeshLab's vertex quality: paper Fig. 11).
+  AdaptiveField speedField = AdaptiveField::TotalCurvature;
+  /// mu of the speed F = 1 / (1 + mu q / s) (dimensionless, s the field's 95th percentile);
+  /// 0 = uniform metric (no alignment). 8: on fandisk, boundaries follow its sharp edges.
+  double featureAlignment = 8.0;
+  /// Ball radius of the total curvature (0 = the mean edge length).
+  double curvatureRadius = 0.0;
+  unsigned seed = 0;  ///< the farthest-point sampling's start: the same seed, the same regions
+  /// Rounds of "add a seed to each non-disk region, iterate again" before giving up (InvalidInput
+  /// is not returned: the result says how many regions are still not disks).
+  int maxDiskRounds = 64;
+  /// Lloyd iterations after each round of added seeds.
+  int iterationsAfterAdding = 4;
+  GeodesicSurfaceParams surface;  ///< the surface the fronts run on (Auto refinement)
+};
+
+struct SegmentationResult {
+  std::vector<int> faceRegion;  ///< per input face, its region in [0, regions)
+  int regions = 0;              ///< regions got: regionsAsked + regionsAdded
+  int regionsAsked = 0;
+  int regionsAdded = 0;         ///< seeds added to split regions that were not disks
+  int nonDiskRegions = 0;       ///< regions still not disks when the rounds ran out (0 normally)
+  int strayFacesMoved = 0;      ///< faces given to a neighbouring region to keep regions connected
+  int iterations = 0;           ///< Lloyd iterations accepted, over all rounds
+  int reseeded = 0;             ///< seeds re-placed because their cell vanished
+  double energyStart = 0.0;     ///< the Lloyd energy of the farthest-point samples
+  double energyEnd = 0.0;       ///< of the final seeds
+  std::vector<Vec3> seedPosition;  ///< per region, its seed in 3D
+  bool refined = false;         ///< the fronts ran on the intrinsic refinement of the input
+  int insertedPoints = 0;
+  double curvatureRadius = 0.0;  ///< the ball radius used (featureAlignment > 0, TotalCurvature)
+  std::string speedFallback;     ///< the speed mapping's fallback, if it took one (for the log)
+};
+
+/// Region topology counted from a face labelling: per region, its faces, edge-connected pieces,
+/// Euler characteristic V - E + F and boundary loops (edges with one face in the region).
+struct RegionTopology {
+  int faces = 0, pieces = 0, euler = 0, boundaryLoops = 0;
+  bool isDisk() const { return faces > 0 && pieces == 1 && euler == 1 && boundaryLoops == 1; }
+};
+std::vector<RegionTopology> regionTopology(const TriMesh& mesh, const std::vector<int>& faceRegion, int regions);
+
+/// Segments `mesh` (manifold, with faces). `values` is the per-vertex field when speedField is
+/// VertexQuality (not read otherwise). Fails with InvalidInput (no faces, regions < 1 or more
+/// than the vertices, iterations < 0, a negative or non-finite strength, a field of the wrong
+/// size or with a NaN), NonManifold, Cancelled.
+Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vector<double>& values,
+                                            const SegmentationParams& params = {}, Progress progress = {});
+
+}  // namespace gr

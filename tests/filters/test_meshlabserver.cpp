@@ -279,10 +279,16 @@ TEST_P(UniformAcceptance, TopologyKeptThroughMeshlabserver) {
   EXPECT_EQ(b.components, a.components);
   EXPECT_EQ(b.genus, a.genus);
   EXPECT_EQ(b.boundaryLoops, a.boundaryLoops);
+  // The output is the samples plus the repair's additions, as the log says; when the repair adds
+  // samples the sampling is redone with fewer (the count search), so the output lands near the
+  // count asked for: within 2% here (on these meshes it lands on it).
   const int target = input->vertexCount() * pct / 100;
+  const int sampled = test::numberBefore(run.output, "by farthest-point sampling");
   const int added = test::numberBefore(run.output, "added to make the triangulation valid");
   ASSERT_GE(added, 0) << run.output;
-  EXPECT_EQ(result->vertexCount(), target + added) << run.output;
+  ASSERT_GT(sampled, 0) << run.output;
+  EXPECT_EQ(result->vertexCount(), sampled + added) << run.output;
+  EXPECT_NEAR(result->vertexCount(), target, 0.02 * target) << run.output;
   const AngleStatistics q = angleStatistics(*result);
   std::printf(
       "%s %d%%: %d vertices (%d added), genus %d, %d loops, %d components; angle std %.1f, min %.1f, "

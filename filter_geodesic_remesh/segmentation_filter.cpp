@@ -58,9 +58,9 @@ void splitIntoLayers(MeshDocument& doc, MeshModel& mm, const adapters::CoreView&
 
 void logSegmentation(const SegmentationResult& r, const SegmentationParams& p, bool layers, double ms,
                      FilterContext& ctx) {
-  ctx.log("Geodesic centroidal tessellation: " + std::to_string(r.regions) + " regions (" +
+  ctx.log("Geodesic centroidal tessellation: " + std::to_string(r.regions) + " regions; " +
           std::to_string(r.regionsAsked) + " asked, " + std::to_string(r.regionsAdded) +
-          " added to make every region a disk)");
+          " added to make every region a disk");
   ctx.log("Lloyd: " + std::to_string(r.iterations) + " iterations, energy " + formatNumber(r.energyStart) + " -> " +
           formatNumber(r.energyEnd) + (r.reseeded > 0 ? ", " + std::to_string(r.reseeded) + " seeds re-placed" : ""));
   if (p.featureAlignment > 0.0)
@@ -75,7 +75,8 @@ void logSegmentation(const SegmentationResult& r, const SegmentationParams& p, b
     ctx.log("Fronts ran on the intrinsic Delaunay refinement of the input (" + std::to_string(r.insertedPoints) +
             " points inserted): its triangles are poor");
   if (r.strayFacesMoved > 0)
-    ctx.log(std::to_string(r.strayFacesMoved) + " faces given to a neighbouring region so that each region is one piece");
+    ctx.log(std::to_string(r.strayFacesMoved) +
+            " faces given to a neighbouring region so that each region is one piece");
   if (r.nonDiskRegions > 0)
     ctx.warn(std::to_string(r.nonDiskRegions) + " regions are still not topological disks (rounds ran out)");
   ctx.log(std::string("Region index in face quality, one colour per region in face colour, faces on region "

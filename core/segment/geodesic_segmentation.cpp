@@ -59,25 +59,18 @@ std::vector<int> piecesOf(const TriMesh& mesh, const std::vector<int>& faceRegio
   return piece;
 }
 
-/// The region of each input face from its vertices' cells: the majority; three different cells
-/// (or two and an unreached vertex): the cell of the vertex nearest its seed.
+/// The region of each input face: the cell of its vertex nearest its own seed (least U). A face
+/// next to a slow band (a sharp edge under the feature-aligned speed) has its far vertex nearer
+/// its seed than the vertices on the band, so the region boundary runs along the band's edges.
 std::vector<int> labelFaces(const TriMesh& mesh, const std::vector<int>& cell, const std::vector<double>& distance) {
   std::vector<int> label(mesh.faceCount(), -1);
   for (int f = 0; f < mesh.faceCount(); ++f) {
-    const Tri& t = mesh.triangles[f];
-    const int a = cell[t[0]], b = cell[t[1]], c = cell[t[2]];
-    if (a >= 0 && (a == b || a == c)) {
-      label[f] = a;
-    } else if (b >= 0 && b == c) {
-      label[f] = b;
-    } else {
-      double best = kUnreached;
-      for (int v : t)
-        if (cell[v] >= 0 && distance[v] < best) {
-          best = distance[v];
-          label[f] = cell[v];
-        }
-    }
+    double best = kUnreached;
+    for (int v : mesh.triangles[f])
+      if (cell[v] >= 0 && distance[v] < best) {
+        best = distance[v];
+        label[f] = cell[v];
+      }
   }
   return label;
 }
@@ -108,8 +101,10 @@ int mergeStrayPieces(const TriMesh& mesh, std::vector<int>& faceRegion, int regi
         if (r < 0 || r == faceRegion[f]) continue;
         auto& list = shared[piece[f]];
         auto it = std::find_if(list.begin(), list.end(), [r](const auto& e) { return e.first == r; });
-        if (it == list.end()) list.emplace_back(r, 1);
-        else ++it->second;
+        if (it == list.end())
+          list.emplace_back(r, 1);
+        else
+          ++it->second;
       }
     }
     std::vector<int> target(pieces, -1);
@@ -162,8 +157,8 @@ Status checkSegmentationInput(const TriMesh& mesh, const std::vector<double>& va
 }
 
 /// The metric of the segmentation: uniform (mu = 0) or the Attractive speed of the field.
-Expected<Metric> segmentationMetric(const TriMesh& mesh, const std::vector<double>& values,
-                                    const SegmentationParams& p, SegmentationResult* out, Progress progress) {
+Expected<Metric> segmentationMetric(const TriMesh& mesh, const std::vector<double>& values, const SegmentationParams& p,
+                                    SegmentationResult* out, Progress progress) {
   if (p.featureAlignment == 0.0) return Metric::uniform();
   AdaptiveMetricParams a;
   a.field = p.speedField;
@@ -193,14 +188,17 @@ int seedsForNonDisks(const TriMesh& mesh, const std::vector<int>& faceRegion, co
   }
   int added = 0;
   *nonDisk = 0;
+  // Regions that lost all their faces to their neighbours: their seeds go to the vertices
+  // farthest from all seeds, one each.
+  std::vector<int> farthestFirst(distance.size());
+  std::iota(farthestFirst.begin(), farthestFirst.end(), 0);
+  std::sort(farthestFirst.begin(), farthestFirst.end(), [&](int a, int b) {
+    return (std::isfinite(distance[a]) ? distance[a] : -1.0) > (std::isfinite(distance[b]) ? distance[b] : -1.0);
+  });
+  size_t nextFarthest = 0;
   for (int r = 0; r < regions; ++r) {
-    if (topo[r].faces == 0) {  // lost its faces to its neighbours: its seed goes to the farthest vertex
-      const int v = static_cast<int>(std::max_element(distance.begin(), distance.end(),
-                                                      [](double a, double b) {
-                                                        return (std::isfinite(a) ? a : -1.0) < (std::isfinite(b) ? b : -1.0);
-                                                      }) -
-                                     distance.begin());
-      seeds[r] = SurfacePoint::atVertex(v);
+    if (topo[r].faces == 0) {
+      if (nextFarthest < farthestFirst.size()) seeds[r] = SurfacePoint::atVertex(farthestFirst[nextFarthest++]);
       ++*replaced;
     } else if (!topo[r].isDisk()) {
       ++*nonDisk;
@@ -224,6 +222,7 @@ std::vector<RegionTopology> regionTopology(const TriMesh& mesh, const std::vecto
   const std::vector<int> piece = piecesOf(mesh, faceRegion, &pieceCount);
   std::vector<int> stamp(mesh.vertexCount(), -1), parent(mesh.vertexCount()), boundaryDegree(mesh.vertexCount(), 0);
   std::vector<char> pieceSeen(pieceCount, 0);
+  std::vector<int> loopSeen(mesh.vertexCount(), -1);  // per root vertex, the last region that counted it
   const auto root = [&](int v) {
     while (parent[v] != v) v = parent[v] = parent[parent[v]];
     return v;
@@ -265,9 +264,10 @@ std::vector<RegionTopology> regionTopology(const TriMesh& mesh, const std::vecto
     bool pinched = false;
     for (int v : boundaryVertices) {
       pinched = pinched || boundaryDegree[v] != 2;
-      if (root(v) == v) {
+      const int top = root(v);
+      if (loopSeen[top] != r) {
+        loopSeen[top] = r;
         ++loops;
-        parent[v] = -1 - v;  // counted: no longer its own root
       }
     }
     t.boundaryLoops = pinched ? -1 : loops;
@@ -296,9 +296,9 @@ Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vect
   std::vector<SurfacePoint> seeds = sampled->origin;
   LloydParams lloyd = params.lloyd;
   for (int round = 0;; ++round) {
-    Expected<LloydResult> relaxed =
-        geodesicLloyd(surface->mesh(), surface->metric, marcher, seeds, lloyd,
-                      progress.sub(0.15 + 0.8 * (1.0 - std::pow(0.5, round)), 0.15 + 0.8 * (1.0 - std::pow(0.5, round + 1))));
+    Expected<LloydResult> relaxed = geodesicLloyd(
+        surface->mesh(), surface->metric, marcher, seeds, lloyd,
+        progress.sub(0.15 + 0.8 * (1.0 - std::pow(0.5, round)), 0.15 + 0.8 * (1.0 - std::pow(0.5, round + 1))));
     if (!relaxed) return relaxed.status();
     if (round == 0) out.energyStart = relaxed->energy.front();
     out.energyEnd = relaxed->energy.back();

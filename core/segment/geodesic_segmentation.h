@@ -3,7 +3,7 @@
 //
 //   mesh --adaptiveMetric (total curvature or a given field, Attractive: the paper's F2 "edge
 //          attractive" speed 1/(1 + mu tau/s), which freezes fronts at sharp edges)--> metric
-//        --prepareGeodesicSurface (its intrinsic refinement where the triangles are poor)
+//        --prepareGeodesicSurface (the input as it is, by default)
 //        --farthestPointSampling (`regions` seeds) --geodesicLloyd (`iterations`)--> cells
 //        --faces labelled by their vertices' cells (the majority; three different: the vertex
 //          nearest its seed), each label's stray pieces given to the neighbour they share most
@@ -49,22 +49,29 @@ struct SegmentationParams {
   int maxDiskRounds = 64;
   /// Lloyd iterations after each round of added seeds.
   int iterationsAfterAdding = 4;
-  GeodesicSurfaceParams surface;  ///< the surface the fronts run on (Auto refinement)
+  /// The surface the fronts run on: the input as it is by default (Off), since regions are
+  /// unions of input faces labelled from their vertices; a refinement's inserted points would
+  /// make cells finer than the faces that carry them.
+  GeodesicSurfaceParams surface = [] {
+    GeodesicSurfaceParams p;
+    p.refinement = SurfaceRefinement::Off;
+    return p;
+  }();
 };
 
 struct SegmentationResult {
   std::vector<int> faceRegion;  ///< per input face, its region in [0, regions)
   int regions = 0;              ///< regions got: regionsAsked + regionsAdded
   int regionsAsked = 0;
-  int regionsAdded = 0;         ///< seeds added to split regions that were not disks
-  int nonDiskRegions = 0;       ///< regions still not disks when the rounds ran out (0 normally)
-  int strayFacesMoved = 0;      ///< faces given to a neighbouring region to keep regions connected
-  int iterations = 0;           ///< Lloyd iterations accepted, over all rounds
-  int reseeded = 0;             ///< seeds re-placed because their cell vanished
-  double energyStart = 0.0;     ///< the Lloyd energy of the farthest-point samples
-  double energyEnd = 0.0;       ///< of the final seeds
+  int regionsAdded = 0;            ///< seeds added to split regions that were not disks
+  int nonDiskRegions = 0;          ///< regions still not disks when the rounds ran out (0 normally)
+  int strayFacesMoved = 0;         ///< faces given to a neighbouring region to keep regions connected
+  int iterations = 0;              ///< Lloyd iterations accepted, over all rounds
+  int reseeded = 0;                ///< seeds re-placed because their cell vanished
+  double energyStart = 0.0;        ///< the Lloyd energy of the farthest-point samples
+  double energyEnd = 0.0;          ///< of the final seeds
   std::vector<Vec3> seedPosition;  ///< per region, its seed in 3D
-  bool refined = false;         ///< the fronts ran on the intrinsic refinement of the input
+  bool refined = false;            ///< the fronts ran on the intrinsic refinement of the input
   int insertedPoints = 0;
   double curvatureRadius = 0.0;  ///< the ball radius used (featureAlignment > 0, TotalCurvature)
   std::string speedFallback;     ///< the speed mapping's fallback, if it took one (for the log)

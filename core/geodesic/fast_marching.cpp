@@ -413,8 +413,11 @@ void FastMarcher::scatter(int v) {
 }
 
 Status FastMarcher::propagate(const FastMarchingParams& params, Progress progress) {
-  beginRun();
   const int nv = mesh_.vertexCount();
+  if (params.region && static_cast<int>(params.region->size()) != nv)
+    return invalidInput("fast marching: the region has " + std::to_string(params.region->size()) + " labels for " +
+                        std::to_string(nv) + " vertices");
+  beginRun();
   const bool withTargets = !params.targets.empty();
   std::vector<int> targets;
   if (withTargets) {
@@ -448,6 +451,7 @@ Status FastMarcher::propagate(const FastMarchingParams& params, Progress progres
         return cancelled();
       }
     }
+    if (params.region && (*params.region)[vertexOf_[v]] != params.regionLabel) continue;  // a margin vertex
     if (!saddle_.empty() && saddle_[v]) seedAcrossStar(v, node_[v].cell);
     if (!pathBegin_.empty())
       for (int k = pathBegin_[v]; k < pathBegin_[v + 1]; ++k) {

@@ -45,6 +45,11 @@ struct FastMarchingParams {
   double maxDistance = kUnreached;
   /// Stop as soon as all these vertices are accepted; empty (default) = no such stop.
   std::vector<int> targets;
+  /// A region to stay in (none by default): per vertex a label. The front enters any vertex it
+  /// reaches but goes on only from vertices labelled `regionLabel`, so it covers the region and
+  /// the ring of vertices around it (a Voronoi cell and its margin, for Lloyd's descent).
+  const std::vector<int>* region = nullptr;
+  int regionLabel = 0;
 };
 
 struct FastMarchingResult {

@@ -16,6 +16,38 @@ inline Vec3 areaNormal(const TriMesh& mesh, const Tri& t) {
 }
 inline Vec3 areaNormal(const TriMesh& mesh, int face) { return areaNormal(mesh, mesh.triangles[face]); }
 
+/// Barycentric coordinates (of a, b, c) of the point of triangle (a, b, c) nearest to p
+/// (Ericson, Real-Time Collision Detection, §5.1.5: the vertex, edge or interior region of p).
+inline Vec3 closestPointBarycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return {1.0, 0.0, 0.0};
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return {0.0, 1.0, 0.0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+    const double v = d1 / (d1 - d3);
+    return {1.0 - v, v, 0.0};
+  }
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return {0.0, 0.0, 1.0};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+    const double w = d2 / (d2 - d6);
+    return {1.0 - w, 0.0, w};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0.0, 1.0 - w, w};
+  }
+  const double sum = va + vb + vc;
+  if (!(sum > 0.0)) return {1.0, 0.0, 0.0};  // a degenerate triangle: its first vertex
+  return {va / sum, vb / sum, vc / sum};
+}
+
 /// Edge lengths read per corner: the length of the edge facing corner c, (V(next c), V(prev c)).
 /// Measured between the positions, or read from per-corner lengths when a triangulation carries
 /// its own (an intrinsic triangulation, whose edges are not the straight chords).

@@ -1,0 +1,78 @@
+// Geodesic Lloyd iteration: seeds moved to the intrinsic centres of mass of their geodesic
+// Voronoi cells, towards a geodesic centroidal Voronoi tessellation (paper §4.2).
+//
+//   seeds --multi-source front--> cells V_i and field U --> energy sum_i E_i = sum_x m_x U(x)^2
+//         --each cell: a descent of E_i(w) = integral over V_i of d(x, w)^2 dm, from its seed
+//         --> new seeds; again, until `iterations` or a relative decrease below `tolerance`
+//
+// The centre of mass w of a cell (its Karcher mean) is where the integral of log_w(x) dm over the
+// cell vanishes. A descent step runs one front from w over the cell and its ring of vertices
+// (FastMarchingParams::region), takes log_w(x) as d(x, w) times the unit direction of x - w in
+// the tangent plane at w (exact on a flat cell, first order on a curved one), and moves w by the
+// mean of it divided by P(w) (in mesh units: the Newton step of E_i) to the point of the cell's
+// faces nearest to that target, so seeds lie inside faces, not only on vertices. A step that does
+// not lower E_i is halved (twice); then the descent of that cell ends (paper: about 8 steps).
+//
+// The mass element dm is the surface's area (one third of the faces around each vertex), or the
+// metric's area P^2 ds (`metricArea`: cells of equal metric area, so that an adaptive density
+// 1/F^2 is kept).
+//
+// Over-relaxation (`overRelaxation`): seeds move past the centre, by omega times the step; bunny00
+// from 100 farthest-point samples: 94.5% of their energy after 6 iterations instead of 95.1%;
+// both end at 92.9-93.0% after 20 (Lloyd's local minimum next to the samples).
+// Guarantees: the energy, as recomputed from a multi-source front of the seeds, never increases
+// from one accepted iteration to the next (an iteration that would raise it is undone and ends the
+// run); every seed keeps a cell (a seed whose cell vanished goes to the vertex farthest from all
+// seeds, counted in `reseeded`).
+// Cost per iteration: one front over the mesh, plus per cell at most 3 fronts per descent step
+// over the cell and its ring: about 1 + 2 * (descent steps taken) fronts over the whole mesh.
+#pragma once
+
+#include <vector>
+
+#include "core/base/progress.h"
+#include "core/base/status.h"
+#include "core/geodesic/fast_marching.h"
+#include "core/geodesic/metric.h"
+#include "core/mesh/surface_point.h"
+#include "core/mesh/tri_mesh.h"
+
+namespace gr {
+
+/// Options of the geodesic Lloyd iteration (Peyré & Cohen 2006, §4.2).
+struct LloydParams {
+  int iterations = 20;  ///< at most this many iterations (>= 0; 0 = only the cells of the seeds)
+  /// Stop when one iteration lowers the energy by less than this fraction of it (>= 0; 0 = never).
+  double tolerance = 1e-4;
+  int descentSteps = 8;     ///< at most this many descent steps per cell and iteration (>= 1)
+  bool metricArea = false;  ///< mass element P^2 ds instead of ds (see the top of this file)
+  /// Over-relaxation omega in [1, 2): each seed moves omega times the way to its cell's centre of
+  /// mass (the point of the cell's faces nearest to that), which speeds up Lloyd's slow
+  /// convergence; an iteration that would raise the energy is redone with omega = 1. 1 = plain Lloyd.
+  double overRelaxation = 1.6;
+};
+
+struct LloydResult {
+  std::vector<SurfacePoint> seeds;  ///< the final seeds, one per cell
+  std::vector<double> distance;     ///< per vertex, U to the nearest final seed
+  std::vector<int> cell;            ///< per vertex, the index of its nearest final seed (-1: unreached)
+  /// The energy sum_i E_i before the first iteration and after each accepted one.
+  std::vector<double> energy;
+  int iterations = 0;   ///< iterations accepted
+  int reseeded = 0;     ///< seeds re-placed because their cell vanished
+  bool undone = false;  ///< the last iteration raised the energy and was undone
+};
+
+/// Per-vertex mass of the energy: one third of the area of the faces around each vertex, times
+/// P^2 when `metricArea` (P from `metric`, uniform = 1).
+std::vector<double> lloydVertexMass(const TriMesh& mesh, const Metric& metric, bool metricArea);
+
+/// Lloyd iterations from `seeds` on `mesh` under `metric`, with `marcher` (built on the same mesh
+/// and metric; it is reset, and holds the final seeds' field on return). Fails (InvalidInput) on
+/// no seed, a seed out of range, a metric of the wrong size or parameters out of range;
+/// (Cancelled) if the progress callback says so.
+Expected<LloydResult> geodesicLloyd(const TriMesh& mesh, const Metric& metric, FastMarcher& marcher,
+                                    std::vector<SurfacePoint> seeds, const LloydParams& params = {},
+                                    Progress progress = {});
+
+}  // namespace gr

@@ -92,6 +92,7 @@ Status applyAdaptiveRemesh(MeshDocument& doc, const RichParameterList& params, F
   if (!current) return current.status();
   AdaptiveRemeshParams adaptive;
   adaptive.remesh.sampling = readSampling(params);
+  adaptive.remesh.centroidalIterations = params.getInt(param::kCentroidalIterations);
   adaptive.metric.field = static_cast<AdaptiveField>(params.getEnum(param::kField));
   adaptive.metric.speed.mapping = static_cast<SpeedMapping>(params.getEnum(param::kMapping));
   adaptive.metric.speed.strength = params.getFloat(param::kStrength);

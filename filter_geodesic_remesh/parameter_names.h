@@ -10,7 +10,7 @@ constexpr const char* kSurfaceRefinement = "Refinement";
 
 // Both remeshing filters: the sampling
 constexpr const char *kTargetVertices = "TargetVertices", *kSpacing = "Spacing", *kSeed = "Seed",
-                     *kSubVertexPlacement = "SubVertexPlacement";
+                     *kSubVertexPlacement = "SubVertexPlacement", *kCentroidalIterations = "CentroidalIterations";
 
 // Remeshing: Geodesic Uniform
 constexpr const char *kRefinement = "Refinement", *kRelaxation = "Relaxation", *kLabelInput = "LabelInput";

@@ -13,7 +13,7 @@
 namespace gr::filters {
 
 /// Adds the sampling parameters every remeshing filter has (TargetVertices, Spacing, Seed,
-/// SubVertexPlacement), with the defaults of SurfaceRemeshParams and FpsParams.
+/// SubVertexPlacement, CentroidalIterations), with the defaults of SurfaceRemeshParams and FpsParams.
 void declareSampling(const MeshModel& mesh, RichParameterList& params);
 /// Reads them (the core checks them): Spacing is used only when TargetVertices is 0.
 FpsParams readSampling(const RichParameterList& params);

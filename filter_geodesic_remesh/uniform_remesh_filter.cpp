@@ -37,6 +37,7 @@ Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, Fi
   if (!current) return current.status();
   SurfaceRemeshParams remesh;
   remesh.sampling = readSampling(params);
+  remesh.centroidalIterations = params.getInt(param::kCentroidalIterations);
   remesh.refinement = params.getInt(param::kRefinement);
   remesh.relaxation.iterations = params.getInt(param::kRelaxation);
   Expected<SurfaceRemeshResult> result = remeshSurface(current->view.mesh, remesh, ctx.progress);

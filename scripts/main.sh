@@ -8,6 +8,8 @@
 # (the remeshing scripts ask for 647 vertices: 10% of fandisk), then the distance from vertex 0 on
 # cheese.off, a CAD-like mesh of slivers: the log says the surface was refined for the fronts
 #   resources/fast_marching_vertex0.mlx     -> cheese_geodesic.ply
+# and back on the mesh: resources/segmentation_50.mlx -> <mesh>_segmentation.ply (regions in face
+#   quality and colour)
 # and prints MeshLab's log of each run. The plugin is loaded from a staged prefix (build/stage),
 # not from /usr.
 set -euo pipefail
@@ -22,21 +24,22 @@ bash "$root/scripts/stage_meshlab.sh" "$build/filter_geodesic_remesh/libfilter_g
 mkdir -p "$root/output"
 name=$(basename "${mesh%.*}")
 
-run() {  # run <script.mlx> <output.ply> <what the output holds> [input mesh, default $mesh]
+run() {  # run <script.mlx> <output.ply> <what the output holds> [input mesh, default $mesh] [saved attributes]
   local script=$1 out=$2 what=$3
   local mesh=${4:-$mesh}
+  local mask=${5:-vq vc sa}
   rm -f "$out"
   echo "== meshlabserver: $(basename "$mesh") -> $out, script $(basename "$script")"
   set +e
   local log
-  log=$(cd "$root/output" && xvfb-run -a stdbuf -oL "$stage/bin/meshlabserver" -i "$mesh" -o "$out" -m vq vc sa -s "$script" 2>&1)
+  log=$(cd "$root/output" && xvfb-run -a stdbuf -oL "$stage/bin/meshlabserver" -i "$mesh" -o "$out" -m $mask -s "$script" 2>&1)
   local rc=$?
   set -e
   # MeshLab's own log lines of the run (noise filtered out). meshlabserver prints our progress
   # labels with no line break, so a run of them can prefix the next log line: a label directly
   # followed by a letter (the next label or log line, with no space) is cut.
   echo "$log" | grep -vE "^LOG: |XDG_RUNTIME_DIR|no additional memory|^Loading Plugins|^Total [0-9]+ (filtering|io)|Current Plugins Dir|^$" |
-    sed -E ':a; s/^(Farthest point sampling|Fast marching|intrinsic Delaunay refinement|Geodesic Delaunay repair|Relaxation|Curvature|Surface distance)([A-Za-z])/\2/; ta' | sed 's/^/  /'
+    sed -E ':a; s/^(Farthest point sampling|Fast marching|intrinsic Delaunay refinement|Geodesic Delaunay repair|Relaxation|Curvature|Surface distance|Geodesic Lloyd)([A-Za-z])/\2/; ta' | sed 's/^/  /'
   echo "== exit code $rc"
   [ $rc -eq 0 ] && [ -s "$out" ] || { echo "main: meshlabserver failed" >&2; exit 1; }
   local nv nf
@@ -54,3 +57,6 @@ run "$root/resources/adaptive_curvature_10pct.mlx" "$root/output/${name}_adaptiv
 run "$root/resources/fast_marching_vertex0.mlx" "$root/output/cheese_geodesic.ply" \
     "distance from vertex 0 on cheese.off (slivers: fronts on its intrinsic Delaunay refinement)" \
     "$cache/meshes/cheese.off"
+run "$root/resources/segmentation_50.mlx" "$root/output/${name}_segmentation.ply" \
+    "50 regions of a geodesic centroidal tessellation, each a disk: region in face quality, one colour per region" \
+    "$mesh" "fq fc"

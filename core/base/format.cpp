@@ -11,8 +11,9 @@ std::string formatNumber(double x, const char* spec) {
 }
 
 std::string formatDuration(double milliseconds) {
-  return milliseconds < 10000.0 ? formatNumber(milliseconds, "%.3g") + " ms"
-                                : formatNumber(milliseconds / 1000.0, "%.3g") + " s";
+  // "%.3g" would print 2870 ms as "2.87e+03 ms": seconds from 1,000 ms on.
+  return milliseconds < 1000.0 ? formatNumber(milliseconds, "%.3g") + " ms"
+                               : formatNumber(milliseconds / 1000.0, "%.3g") + " s";
 }
 
 }  // namespace gr

@@ -243,6 +243,21 @@ Status LloydRun::descend(int i, SurfacePoint& seed) {
   return Status::ok();
 }
 
+/// Moves each seed inside a face to the face's vertex of largest barycentric coordinate; whether
+/// any moved.
+bool moveSeedsToVertices(const TriMesh& mesh, std::vector<SurfacePoint>& seeds) {
+  bool moved = false;
+  for (SurfacePoint& p : seeds) {
+    if (p.vertex >= 0) continue;
+    int k = 0;
+    for (int j = 1; j < 3; ++j)
+      if (p.bary[j] > p.bary[k]) k = j;
+    p = SurfacePoint::atVertex(mesh.triangles[p.face][k]);
+    moved = true;
+  }
+  return moved;
+}
+
 Status checkLloydInput(const TriMesh& mesh, const Metric& metric, const FastMarcher& marcher,
                        const std::vector<SurfacePoint>& seeds, const LloydParams& params) {
   if (seeds.empty()) return invalidInput("geodesic Lloyd: no seed");
@@ -284,15 +299,22 @@ Expected<LloydResult> geodesicLloyd(const TriMesh& mesh, const Metric& metric, F
   if (!energy) return energy.status();
   result.energy.push_back(*energy);
   const int n = static_cast<int>(seeds.size());
+  std::vector<char> fixed(n, 0);
+  if (params.keepBoundarySeeds) {
+    const std::vector<char> boundary = boundaryVertexFlags(mesh);
+    for (int i = 0; i < n; ++i) fixed[i] = seeds[i].vertex >= 0 && boundary[seeds[i].vertex];
+  }
   for (int it = 0; it < params.iterations; ++it) {
     std::vector<SurfacePoint> centres = seeds;
     for (int i = 0; i < n; ++i) {
       if (!progress.report((it + double(i) / n) / params.iterations, "Geodesic Lloyd")) return cancelled();
+      if (fixed[i]) continue;
       if (Status s = run.descend(i, centres[i]); !s) return s;
     }
     std::vector<SurfacePoint> moved = centres;
     if (params.overRelaxation > 1.0)
-      for (int i = 0; i < n; ++i) moved[i] = run.beyond(i, seeds[i], centres[i], params.overRelaxation);
+      for (int i = 0; i < n; ++i)
+        if (!fixed[i]) moved[i] = run.beyond(i, seeds[i], centres[i], params.overRelaxation);
     int reseeded = 0;
     Expected<double> next = run.voronoi(moved, &reseeded);
     if (!next) return next.status();
@@ -314,6 +336,11 @@ Expected<LloydResult> geodesicLloyd(const TriMesh& mesh, const Metric& metric, F
     result.energy.push_back(*next);
     ++result.iterations;
     if (previous - *next < params.tolerance * previous) break;
+  }
+  if (params.vertexSeeds && moveSeedsToVertices(mesh, seeds)) {
+    Expected<double> snapped = run.voronoi(seeds, &result.reseeded);
+    if (!snapped) return snapped.status();
+    result.energy.push_back(*snapped);
   }
   result.seeds = std::move(seeds);
   result.distance = run.distance();

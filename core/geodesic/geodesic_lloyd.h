@@ -50,13 +50,21 @@ struct LloydParams {
   /// mass (the point of the cell's faces nearest to that), which speeds up Lloyd's slow
   /// convergence; an iteration that would raise the energy is redone with omega = 1. 1 = plain Lloyd.
   double overRelaxation = 1.6;
+  /// End with every seed on a vertex: moved to the vertex of its face with the largest
+  /// barycentric coordinate, and the cells of those seeds computed (callers that need vertex
+  /// seeds: a labelling of faces by their vertices, samples on a refined surface).
+  bool vertexSeeds = false;
+  /// Seeds on boundary vertices stay where they are (a remeshing samples its boundaries first so
+  /// that they stay boundaries).
+  bool keepBoundarySeeds = false;
 };
 
 struct LloydResult {
   std::vector<SurfacePoint> seeds;  ///< the final seeds, one per cell
   std::vector<double> distance;     ///< per vertex, U to the nearest final seed
   std::vector<int> cell;            ///< per vertex, the index of its nearest final seed (-1: unreached)
-  /// The energy sum_i E_i before the first iteration and after each accepted one.
+  /// The energy sum_i E_i before the first iteration and after each accepted one (and, with
+  /// vertexSeeds, of the seeds on vertices last: it may be a little higher).
   std::vector<double> energy;
   int iterations = 0;   ///< iterations accepted
   int reseeded = 0;     ///< seeds re-placed because their cell vanished

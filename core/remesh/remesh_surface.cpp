@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/geodesic/fast_marching.h"
+#include "core/geodesic/geodesic_lloyd.h"
 #include "core/geodesic/geodesic_surface.h"
 #include "core/mesh/orientation.h"
 #include "core/mesh/self_intersection.h"
@@ -47,6 +48,10 @@ Status checkRemeshInput(const TriMesh& input, const SurfaceRemeshParams& params)
   if (rounds < 0 || rounds > SurfaceRemeshParams::kMaxRelaxationRounds)
     return invalidInput("Relaxation must be 0 to " + std::to_string(SurfaceRemeshParams::kMaxRelaxationRounds) +
                         " rounds, got " + std::to_string(rounds));
+  if (params.centroidalIterations < 0 || params.centroidalIterations > SurfaceRemeshParams::kMaxCentroidalIterations)
+    return invalidInput("CentroidalIterations must be 0 to " +
+                        std::to_string(SurfaceRemeshParams::kMaxCentroidalIterations) + ", got " +
+                        std::to_string(params.centroidalIterations));
   return Status::ok();
 }
 
@@ -143,9 +148,22 @@ Expected<SampledDual> sampleAndTriangulate(FastMarcher& marcher, const FrontSurf
   FpsParams fpsParams = params.sampling;
   fpsParams.targetCount = request;
   if (front.geodesic.refined) fpsParams.subVertexPlacement = false;  // no exact origin on the input inside a face
-  Expected<FpsResult> fps = farthestPointSampling(marcher, fpsParams, progress.sub(0.0, 0.7));
+  const double lloydShare = params.centroidalIterations > 0 ? 0.35 : 0.0;
+  Expected<FpsResult> fps = farthestPointSampling(marcher, fpsParams, progress.sub(0.0, 0.7 - lloydShare));
   if (!fps) return fps.status();
   d.sampling = std::move(*fps);
+  if (params.centroidalIterations > 0) {
+    LloydParams lloyd;
+    lloyd.iterations = params.centroidalIterations;
+    lloyd.metricArea = true;
+    lloyd.keepBoundarySeeds = true;
+    lloyd.vertexSeeds = front.geodesic.refined;  // a point inside a refined face has no exact origin on the input
+    const Metric& metric = front.geodesic.refined ? front.geodesic.metric : front.fineMetric;
+    Expected<LloydResult> relaxed =
+        geodesicLloyd(front.mesh(), metric, marcher, d.sampling.origin, lloyd, progress.sub(0.7 - lloydShare, 0.7));
+    if (!relaxed) return relaxed.status();
+    d.sampling.origin = std::move(relaxed->seeds);  // the marcher holds their cells, 0..n-1 in order
+  }
   times.sampling += lap(clock);
   Expected<DelaunayResult> dual =
       geodesicDelaunay(marcher, d.sampling.origin, params.triangulation, progress.sub(0.7, 0.95));

@@ -76,6 +76,11 @@ struct SurfaceRemeshParams {
   /// The surface the fronts run on: the input, or (Auto: where its triangles are poor, e.g. CAD
   /// exports with slivers) its intrinsic Delaunay refinement (geodesic_surface.h).
   GeodesicSurfaceParams surface;
+  /// Geodesic Lloyd iterations on the samples before the triangulation (geodesic_lloyd.h; paper
+  /// §4.2), in the remeshing's metric with the metric's area as mass, so that an adaptive density
+  /// 1/F^2 is kept; boundary samples stay. 0 = the farthest-point samples as they are.
+  int centroidalIterations = 0;
+  static constexpr int kMaxCentroidalIterations = 50;  ///< largest centroidalIterations
   /// Also measure the output: angle statistics and the surface distance to the input both ways
   /// (the figures of the filters' log).
   bool measure = true;

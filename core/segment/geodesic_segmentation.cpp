@@ -295,6 +295,9 @@ Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vect
   if (!sampled) return sampled.status();
   std::vector<SurfacePoint> seeds = sampled->origin;
   LloydParams lloyd = params.lloyd;
+  // A seed on a vertex (U = 0 there) owns every face around it in the labelling: no region is
+  // left without a face.
+  lloyd.vertexSeeds = true;
   for (int round = 0;; ++round) {
     Expected<LloydResult> relaxed = geodesicLloyd(
         surface->mesh(), surface->metric, marcher, seeds, lloyd,
@@ -314,11 +317,12 @@ Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vect
     int replaced = 0;
     const int added = seedsForNonDisks(mesh, out.faceRegion, distance, isolated, seeds, &out.nonDiskRegions, &replaced);
     out.reseeded += replaced;
-    if ((added == 0 && replaced == 0) || round == params.maxDiskRounds ||
-        static_cast<int>(seeds.size()) > surface->mesh().vertexCount()) {
-      if (added > 0) seeds.resize(seeds.size() - added);  // not iterated: not counted
-      break;
-    }
+    if (added == 0 && replaced == 0) break;
+    if (round == params.maxDiskRounds || static_cast<int>(seeds.size()) > mesh.vertexCount())
+      return invalidInput("segmentation: the mesh could not be cut into regions that are all topological disks (" +
+                          std::to_string(out.nonDiskRegions + replaced) + " of " + std::to_string(seeds.size()) +
+                          " regions still not disks after " + std::to_string(round + 1) +
+                          " rounds); it may be too coarse for its topology: ask for more regions");
     out.regionsAdded += added;
     lloyd.iterations = std::max(params.iterationsAfterAdding, 1);
   }

@@ -516,6 +516,7 @@ TEST_F(FilterInProcess, DeclaredDefaultsAreTheCoreParamsDefaults) {
                     float(SurfaceRemeshParams::kDefaultSpacingFraction * diag));
     EXPECT_EQ(params.getInt(filters::param::kSeed), int(remesh.sampling.seed));
     EXPECT_EQ(params.getBool(filters::param::kSubVertexPlacement), remesh.sampling.subVertexPlacement);
+    EXPECT_EQ(params.getInt(filters::param::kCentroidalIterations), remesh.centroidalIterations);
   }
   use("Remeshing: Geodesic Uniform");
   declare(*mm);
@@ -1047,10 +1048,10 @@ TEST_F(FilterInProcess, SegmentationWritesDiskRegionsAsTheCoreDoes) {
   // The same regions as the core's, with the same parameters.
   SegmentationParams p;
   p.regions = 20;
-  // MeshLab holds coordinates as float: the core on the same float coordinates.
-  std::vector<Vec3> floats = fandisk.positions;
-  for (Vec3& q : floats) q = q.cast<float>().cast<double>();
-  const Expected<SegmentationResult> core = segmentSurface(*buildTriMesh(floats, fandisk.triangles), {}, p);
+  // The core on the mesh as the filter sees it (MeshLab holds coordinates as float).
+  const Expected<adapters::CoreView> seen = adapters::toCore(mm->cm);
+  ASSERT_TRUE(seen);
+  const Expected<SegmentationResult> core = segmentSurface(seen->mesh, {}, p);
   ASSERT_TRUE(core);
   ASSERT_EQ(static_cast<int>(mm->cm.face.size()), fandisk.faceCount());
   int selected = 0, cut = 0;
@@ -1074,6 +1075,27 @@ TEST_F(FilterInProcess, SegmentationWritesDiskRegionsAsTheCoreDoes) {
     if (layer != mm) layerFaces += layer->cm.fn;
   EXPECT_EQ(layerFaces, fandisk.faceCount());
   EXPECT_NE(logText().find("Time:"), std::string::npos);
+}
+
+// CentroidalIterations on both remeshing filters: a valid remesh of the input's topology at the
+// count asked for, the core's own; out of range, a clean failure.
+TEST_F(FilterInProcess, RemeshWithCentroidalIterations) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  const test::Recount in = test::recount(fandisk.triangles, fandisk.vertexCount());
+  for (const char* name : {"Remeshing: Geodesic Uniform", "Remeshing: Geodesic Adaptive"}) {
+    SCOPED_TRACE(name);
+    use(name);
+    doc.setCurrent(mm);
+    declare(*mm);
+    params.setValue(filters::param::kCentroidalIterations, IntValue(-1));
+    expectCleanFailure(*mm, StatusCode::InvalidInput, "CentroidalIterations");
+    params.setValue(filters::param::kCentroidalIterations, IntValue(3));
+    ASSERT_TRUE(apply()) << logText();
+    const MeshModel* out = doc.mm();
+    ASSERT_NE(out, mm);
+    test::expectValidWithTopologyOf(test::recount(faceIndices(*out), out->cm.vn), in);
+  }
 }
 
 TEST_F(FilterInProcess, SegmentationBadInputLeavesTheDocumentAlone) {

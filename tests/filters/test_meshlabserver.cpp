@@ -14,7 +14,6 @@
 #include <tuple>
 #include <vector>
 
-#include <wrap/io_trimesh/import_ply.h>
 #include "core/geodesic/fast_marching.h"
 #include "core/geodesic/geodesic_surface.h"
 #include "core/measure/evaluation.h"
@@ -23,6 +22,9 @@
 #include "tests/oracles/geodesic_oracles.h"
 #include "tests/support/cad_meshes.h"
 #include "tests/support/test_support.h"
+
+// After vcglib's complex (through core/mesh/vcg_mesh.h): the PLY importer needs it.
+#include <wrap/io_trimesh/import_ply.h>
 
 namespace gr {
 namespace {

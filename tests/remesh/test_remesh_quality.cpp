@@ -55,6 +55,44 @@ TEST_P(RemeshQuality, WellShapedTrianglesAtDefaultSettings) {
   EXPECT_GE(smallest, 20.0);
 }
 
+// Centroidal relaxation (issue 18, point 5): bunny00 at 10% with 10 geodesic Lloyd iterations on
+// the samples has evener angles (standard deviation, recounted here: 11.0 -> 9.7 deg) and a two-sided
+// Hausdorff distance no larger than without, the smallest angle still >= 30 deg. Issue 18 asks for
+// a standard deviation below 7.2 deg (CGAL isotropic remeshing, 10 iterations): not reached.
+TEST(RemeshQualityCentroidal, LloydOnTheSamplesEvensTheAngles) {
+  const TriMesh input = test::loadRealMesh("bunny00.off");
+  SurfaceRemeshParams params;
+  params.sampling.targetCount = input.vertexCount() / 10;
+  const Expected<SurfaceRemeshResult> plain = remeshSurface(input, params);
+  params.centroidalIterations = 10;
+  const Expected<SurfaceRemeshResult> centroidal = remeshSurface(input, params);
+  ASSERT_TRUE(plain && centroidal);
+  const auto stdDegrees = [](const TriMesh& m) {
+    double sum = 0.0, sq = 0.0;
+    int n = 0;
+    for (const Tri& t : m.triangles)
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 u = m.positions[t[(k + 1) % 3]] - m.positions[t[k]],
+                   w = m.positions[t[(k + 2) % 3]] - m.positions[t[k]];
+        const double a = std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / 3.14159265358979323846;
+        sum += a;
+        sq += a * a;
+        ++n;
+      }
+    return std::sqrt(sq / n - (sum / n) * (sum / n));
+  };
+  const auto hausdorff = [](const SurfaceRemeshResult& r) {
+    return std::max(r.measures.toInput.max, r.measures.fromInput.max);
+  };
+  const double before = stdDegrees(plain->mesh), after = stdDegrees(centroidal->mesh);
+  std::printf("bunny00 10%%: angle std %.2f -> %.2f deg, Hausdorff %.4f -> %.4f, smallest %.1f deg\n", before, after,
+              hausdorff(*plain), hausdorff(*centroidal), test::recountAngles(centroidal->mesh).smallestDegrees);
+  EXPECT_LT(after, before - 1.0);
+  EXPECT_LE(hausdorff(*centroidal), hausdorff(*plain));
+  EXPECT_GE(test::recountAngles(centroidal->mesh).smallestDegrees, 30.0);
+  EXPECT_EQ(centroidal->mesh.vertexCount(), plain->mesh.vertexCount());
+}
+
 // The same pipeline on the same surfaces with needles (angles under 1 degree) and zero-area faces
 // (test::withBadTriangles): a valid mesh of the input's topology, every vertex finite and on the
 // input, and the same quality bounds.

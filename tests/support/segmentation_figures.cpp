@@ -1,7 +1,7 @@
 #include "tests/support/segmentation_figures.h"
 
-#include <algorithm>
 #include <Eigen/Geometry>
+#include <algorithm>
 
 #include <cmath>
 

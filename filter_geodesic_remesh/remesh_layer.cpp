@@ -123,7 +123,7 @@ void declareSampling(const MeshModel& mesh, RichParameterList& params) {
                           "Geodesic Lloyd iterations on the samples before the triangulation (0 to " +
                               QString::number(SurfaceRemeshParams::kMaxCentroidalIterations) +
                               "): each sample moves to the centre of mass of its Voronoi cell in the remeshing's "
-                              "metric (paper 4.2), evening out the cells; about 0.4 s per iteration at 3,800 samples "
+                              "metric (paper 4.2), evening out the cells; about 0.25 s per iteration at 3,800 samples "
                               "on a 38k-vertex mesh (default " +
                               QString::number(defaults.centroidalIterations) + ")."));
 }

@@ -11,11 +11,11 @@ namespace gr {
 namespace {
 
 /// A step shorter than this share of the square root of the cell's area ends the cell's descent.
-constexpr double kStepTolerance = 1e-3;
+constexpr double kStepTolerance = 0.01;
 /// A barycentric coordinate above 1 minus this makes the point its vertex.
 constexpr double kSnapToVertex = 1e-9;
-/// Halvings of a step that does not lower the cell's energy before its descent ends.
-constexpr int kHalvings = 2;
+/// Halvings of a step that does not lower the cell's energy before its descent ends (each costs a front).
+constexpr int kHalvings = 1;
 /// Rounds of re-placing the seeds of vanished cells before giving up on that iteration's cells.
 constexpr int kReseedRounds = 8;
 

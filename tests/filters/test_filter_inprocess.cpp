@@ -9,8 +9,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <new>
+#include <regex>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -995,6 +999,39 @@ TEST_F(FilterInProcess, EveryFilterIgnoresDeletedElements) {
     test::expectValidWithTopologyOf(r, test::recount(liveTriangles, static_cast<int>(livePositions.size())));
     EXPECT_EQ(r.boundaryLoops, 1);
   }
+}
+
+// Every script of resources/ lists exactly the parameters its filter declares: MeshLab 2020.09's
+// meshlabserver aborts (an assertion) on a script with a parameter missing, so a parameter added to
+// a filter must be added to every script that runs it.
+TEST_F(FilterInProcess, EveryScriptListsExactlyTheDeclaredParameters) {
+  const TriMesh grid = test::planeGrid(8);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  int scripts = 0;
+  for (const char* dir : {"/resources", "/resources/acceptance"})
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(GR_SOURCE_DIR) + dir)) {
+      if (entry.path().extension() != ".mlx") continue;
+      std::ifstream in(entry.path());
+      const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      const std::regex filterBlock("<filter name=\"([^\"]+)\">([\\s\\S]*?)</filter>");
+      const std::regex paramName("<Param [^>]*name=\"([^\"]+)\"");
+      for (std::sregex_iterator f(text.begin(), text.end(), filterBlock), end; f != end; ++f) {
+        SCOPED_TRACE(entry.path().filename().string() + ": " + (*f)[1].str());
+        use((*f)[1].str().c_str());
+        declare(*mm);
+        const std::string body = (*f)[2].str();
+        std::set<std::string> listed;
+        for (std::sregex_iterator q(body.begin(), body.end(), paramName); q != end; ++q) {
+          listed.insert((*q)[1].str());
+          EXPECT_TRUE(params.hasParameter(QString::fromStdString((*q)[1].str())))
+              << (*q)[1].str() << " is not declared";
+        }
+        EXPECT_EQ(listed.size(), static_cast<size_t>(params.size()))
+            << "a declared parameter is missing from the script";
+        ++scripts;
+      }
+    }
+  EXPECT_GE(scripts, 20);
 }
 
 // --- Segmentation ------------------------------------------------------------------------------

@@ -1017,6 +1017,10 @@ TEST_F(FilterInProcess, EveryScriptListsExactlyTheDeclaredParameters) {
       const std::regex paramName("<Param [^>]*name=\"([^\"]+)\"");
       for (std::sregex_iterator f(text.begin(), text.end(), filterBlock), end; f != end; ++f) {
         SCOPED_TRACE(entry.path().filename().string() + ": " + (*f)[1].str());
+        const QList<QAction*> ours = plugin.actions();
+        if (std::none_of(ours.begin(), ours.end(),
+                         [&](QAction* a) { return a->text().toStdString() == (*f)[1].str(); }))
+          continue;  // one of MeshLab's own filters (e.g. Conditional Vertex Selection)
         use((*f)[1].str().c_str());
         declare(*mm);
         const std::string body = (*f)[2].str();

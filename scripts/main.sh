@@ -43,8 +43,8 @@ run() {  # run <script.mlx> <output.ply> <what the output holds> [input mesh, de
   echo "== exit code $rc"
   [ $rc -eq 0 ] && [ -s "$out" ] || { echo "main: meshlabserver failed" >&2; exit 1; }
   local nv nf
-  nv=$(grep -m1 '^element vertex' "$out" | awk '{print $3}')
-  nf=$(grep -m1 '^element face' "$out" | awk '{print $3}')
+  nv=$(grep -a -m1 '^element vertex' "$out" | awk '{print $3}')
+  nf=$(grep -a -m1 '^element face' "$out" | awk '{print $3}')
   echo "== wrote $out: $nv vertices, $nf faces; $what"
   echo
 }

@@ -77,8 +77,6 @@ void logSegmentation(const SegmentationResult& r, const SegmentationParams& p, b
   if (r.strayFacesMoved > 0)
     ctx.log(std::to_string(r.strayFacesMoved) +
             " faces given to a neighbouring region so that each region is one piece");
-  if (r.nonDiskRegions > 0)
-    ctx.warn(std::to_string(r.nonDiskRegions) + " regions are still not topological disks (rounds ran out)");
   ctx.log(std::string("Region index in face quality, one colour per region in face colour, faces on region "
                       "boundaries selected") +
           (layers ? "; one layer per region" : ""));

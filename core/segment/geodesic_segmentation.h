@@ -44,8 +44,9 @@ struct SegmentationParams {
   /// Ball radius of the total curvature (0 = the mean edge length).
   double curvatureRadius = 0.0;
   unsigned seed = 0;  ///< the farthest-point sampling's start: the same seed, the same regions
-  /// Rounds of "add a seed to each non-disk region, iterate again" before giving up (InvalidInput
-  /// is not returned: the result says how many regions are still not disks).
+  /// Rounds of "add a seed to each non-disk region, iterate again" before giving up with
+  /// InvalidInput (also when more seeds than vertices would be needed: a mesh too coarse for its
+  /// topology, e.g. 3torus.off at 1 region).
   int maxDiskRounds = 64;
   /// Lloyd iterations after each round of added seeds.
   int iterationsAfterAdding = 4;
@@ -64,7 +65,7 @@ struct SegmentationResult {
   int regions = 0;              ///< regions got: regionsAsked + regionsAdded
   int regionsAsked = 0;
   int regionsAdded = 0;            ///< seeds added to split regions that were not disks
-  int nonDiskRegions = 0;          ///< regions still not disks when the rounds ran out (0 normally)
+  int nonDiskRegions = 0;          ///< regions not disks in the last round (0: a result has none)
   int strayFacesMoved = 0;         ///< faces given to a neighbouring region to keep regions connected
   int iterations = 0;              ///< Lloyd iterations accepted, over all rounds
   int reseeded = 0;                ///< seeds re-placed because their cell vanished
@@ -88,7 +89,8 @@ std::vector<RegionTopology> regionTopology(const TriMesh& mesh, const std::vecto
 /// Segments `mesh` (manifold, with faces). `values` is the per-vertex field when speedField is
 /// VertexQuality (not read otherwise). Fails with InvalidInput (no faces, regions < 1 or more
 /// than the vertices, iterations < 0, a negative or non-finite strength, a field of the wrong
-/// size or with a NaN), NonManifold, Cancelled.
+/// size or with a NaN; regions that cannot all be made disks, see maxDiskRounds), NonManifold,
+/// Cancelled.
 Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vector<double>& values,
                                             const SegmentationParams& params = {}, Progress progress = {});
 

@@ -189,12 +189,14 @@ int seedsForNonDisks(const TriMesh& mesh, const std::vector<int>& faceRegion, co
   int added = 0;
   *nonDisk = 0;
   // Regions that lost all their faces to their neighbours: their seeds go to the vertices
-  // farthest from all seeds, one each.
-  std::vector<int> farthestFirst(distance.size());
+  // farthest from all seeds, one each (the vertices sorted only when some region is empty).
+  const int empty =
+      static_cast<int>(std::count_if(topo.begin(), topo.end(), [](const RegionTopology& t) { return t.faces == 0; }));
+  std::vector<int> farthestFirst(empty > 0 ? distance.size() : 0);
   std::iota(farthestFirst.begin(), farthestFirst.end(), 0);
-  std::sort(farthestFirst.begin(), farthestFirst.end(), [&](int a, int b) {
-    return (std::isfinite(distance[a]) ? distance[a] : -1.0) > (std::isfinite(distance[b]) ? distance[b] : -1.0);
-  });
+  const auto finiteOrLow = [&](int v) { return std::isfinite(distance[v]) ? distance[v] : -1.0; };
+  std::partial_sort(farthestFirst.begin(), farthestFirst.begin() + std::min<size_t>(empty, farthestFirst.size()),
+                    farthestFirst.end(), [&](int a, int b) { return finiteOrLow(a) > finiteOrLow(b); });
   size_t nextFarthest = 0;
   for (int r = 0; r < regions; ++r) {
     if (topo[r].faces == 0) {

@@ -30,6 +30,18 @@ double cornerCosine(const TriMesh& m, const CornerLengths& length, int c) {
   return (la * la + lb * lb - lab * lab) / (2.0 * la * lb);
 }
 
+/// Whether the corner c is obtuse (its two edges point apart), without the cosine's square roots
+/// and division: the sign of the dot product, or of la^2 + lb^2 - lab^2 on an intrinsic
+/// triangulation. A zero-length side makes no obtuse corner.
+bool isObtuse(const TriMesh& m, const CornerLengths& length, int c) {
+  if (!length.intrinsic()) {
+    const Vec3& px = m.positions[m.vertex(c)];
+    return (m.positions[m.vertex(TriMesh::next(c))] - px).dot(m.positions[m.vertex(TriMesh::prev(c))] - px) < 0.0;
+  }
+  const double la = length(TriMesh::prev(c)), lb = length(TriMesh::next(c)), lab = length(c);
+  return la > 0.0 && lb > 0.0 && la * la + lb * lb - lab * lab < 0.0;
+}
+
 bool findSplit(const TriMesh& m, const CornerLengths& length, int c, int maxUnfoldings, AcuteSplit& out) {
   const int x = m.vertex(c), a = m.vertex(TriMesh::next(c)), b = m.vertex(TriMesh::prev(c));
   const double la = length(TriMesh::prev(c)), lb = length(TriMesh::next(c));  // |XA|, |XB|
@@ -85,7 +97,7 @@ AcuteSplits findAcuteSplits(const TriMesh& mesh, const std::vector<double>* corn
   for (int f = 0; f < mesh.faceCount(); ++f) {
     for (int k = 0; k < 3; ++k) {  // corner 3f + k: obtuse if its two edges point apart
       const int c = 3 * f + k;
-      if (!(cornerCosine(mesh, length, c) < 0.0)) continue;
+      if (!isObtuse(mesh, length, c)) continue;
       ++s.obtuseCorners;
       if (findSplit(mesh, length, c, maxUnfoldings, split)) {
         s.splitOfCorner[c] = static_cast<int>(s.splits.size());

@@ -60,11 +60,12 @@ class LloydRun {
 
  private:
   Status runFrom(const SurfacePoint& seed, int seedIndex);
-  /// Cell i's energy from the marcher's field of a run inside the cell; +inf if a vertex of the
-  /// cell reached before (count `expectReached`, -1 = any) is not reached.
-  double cellEnergy(int i, int expectReached, int* reached) const;
-  /// The descent's target from w: the mean of log_w(x) over the cell, in mesh units.
-  Vec3 meanLog(int i, const SurfacePoint& w) const;
+  /// Cell i's energy from the field d (the cells' field or a run inside the cell); +inf if a
+  /// vertex of the cell reached before (count `expectReached`, -1 = any) is not reached.
+  double cellEnergy(const std::vector<double>& d, int i, int expectReached, int* reached) const;
+  /// The descent's target from w: the mean of log_w(x) over the cell, in mesh units, from the
+  /// field d of w.
+  Vec3 meanLog(const std::vector<double>& d, int i, const SurfacePoint& w) const;
   SurfacePoint nearestOnCell(int i, const Vec3& p) const;
   void buildCellLists(int cells);
 
@@ -154,8 +155,7 @@ Status LloydRun::runFrom(const SurfacePoint& seed, int seedIndex) {
   return marcher_.propagate(run);
 }
 
-double LloydRun::cellEnergy(int i, int expectReached, int* reached) const {
-  const std::vector<double>& d = marcher_.distance();
+double LloydRun::cellEnergy(const std::vector<double>& d, int i, int expectReached, int* reached) const {
   double e = 0.0;
   int count = 0;
   for (int k = vertexBegin_[i]; k < vertexBegin_[i + 1]; ++k) {
@@ -169,8 +169,7 @@ double LloydRun::cellEnergy(int i, int expectReached, int* reached) const {
   return e;
 }
 
-Vec3 LloydRun::meanLog(int i, const SurfacePoint& w) const {
-  const std::vector<double>& d = marcher_.distance();
+Vec3 LloydRun::meanLog(const std::vector<double>& d, int i, const SurfacePoint& w) const {
   const Vec3 pw = w.position(mesh_);
   Vec3 n = interpolate(mesh_, w, normal_);
   n = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero();
@@ -214,16 +213,23 @@ SurfacePoint LloydRun::nearestOnCell(int i, const Vec3& p) const {
 
 Status LloydRun::descend(int i, SurfacePoint& seed) {
   if (vertexBegin_[i + 1] == vertexBegin_[i]) return Status::ok();
+  const double scale = std::sqrt(std::max(cellArea_[i], 0.0));
+  // The first step reads the seed's field from the cells' field (inside its cell it is the
+  // front from this seed): no front of its own. With 0 steps it is the only one, not checked
+  // here: the next iteration's energy accepts or undoes it.
+  if (params_.descentSteps == 0) {  // one step, checked by the next cells' energy
+    const Vec3 move = meanLog(distance_, i, seed);
+    if (move.norm() > kStepTolerance * scale) seed = nearestOnCell(i, seed.position(mesh_) + move);
+    return Status::ok();
+  }
   // The region of the cell's fronts: its vertices and their neighbours (a one-ring margin).
   ++stamp_;
   for (int k = faceBegin_[i]; k < faceBegin_[i + 1]; ++k)
     for (int v : mesh_.triangles[faces_[k]]) region_[v] = stamp_;
-  if (Status s = runFrom(seed, i); !s) return s;
   int reached = 0;
-  double energy = cellEnergy(i, -1, &reached);
-  const double scale = std::sqrt(std::max(cellArea_[i], 0.0));
+  double energy = cellEnergy(distance_, i, -1, &reached);
   for (int step = 0; step < params_.descentSteps; ++step) {
-    const Vec3 move = meanLog(i, seed);
+    const Vec3 move = meanLog(step == 0 ? distance_ : marcher_.distance(), i, seed);
     if (!(move.norm() > kStepTolerance * scale)) break;
     const Vec3 from = seed.position(mesh_);
     bool lowered = false;
@@ -231,7 +237,7 @@ Status LloydRun::descend(int i, SurfacePoint& seed) {
     for (int h = 0; h <= kHalvings && !lowered; ++h, t *= 0.5) {
       const SurfacePoint candidate = nearestOnCell(i, from + t * move);
       if (Status s = runFrom(candidate, i); !s) return s;
-      const double e = cellEnergy(i, reached, nullptr);
+      const double e = cellEnergy(marcher_.distance(), i, reached, nullptr);
       if (e < energy) {
         seed = candidate;
         energy = e;
@@ -261,10 +267,10 @@ bool moveSeedsToVertices(const TriMesh& mesh, std::vector<SurfacePoint>& seeds) 
 Status checkLloydInput(const TriMesh& mesh, const Metric& metric, const FastMarcher& marcher,
                        const std::vector<SurfacePoint>& seeds, const LloydParams& params) {
   if (seeds.empty()) return invalidInput("geodesic Lloyd: no seed");
-  if (params.iterations < 0 || params.descentSteps < 1 || !(params.tolerance >= 0.0) ||
+  if (params.iterations < 0 || params.descentSteps < 0 || !(params.tolerance >= 0.0) ||
       !(params.overRelaxation >= 1.0 && params.overRelaxation < 2.0))
     return invalidInput(
-        "geodesic Lloyd: iterations must be >= 0, descent steps >= 1, the tolerance >= 0 and the over-relaxation in "
+        "geodesic Lloyd: iterations must be >= 0, descent steps >= 0, the tolerance >= 0 and the over-relaxation in "
         "[1, 2)");
   if (!metric.isUniform() && static_cast<int>(metric.P.size()) != mesh.vertexCount())
     return invalidInput("geodesic Lloyd: the metric does not have one value per vertex");

@@ -47,7 +47,10 @@ struct LloydParams {
   int iterations = 20;  ///< at most this many iterations (>= 0; 0 = only the cells of the seeds)
   /// Stop when one iteration lowers the energy by less than this fraction of it (>= 0; 0 = never).
   double tolerance = 1e-4;
-  int descentSteps = 2;     ///< at most this many descent steps per cell and iteration (>= 1)
+  /// Descent steps per cell and iteration, each checked by a front over the cell (>= 0). 0: one
+  /// step from the cells' own field, checked only by the next iteration's energy (no front per cell:
+  /// about 3x faster per iteration, and on bunny00 a lower energy after 8 iterations).
+  int descentSteps = 0;
   bool metricArea = false;  ///< mass element P^2 ds instead of ds (see the top of this file)
   /// Over-relaxation omega in [1, 2): each seed moves omega times the way to its cell's centre of
   /// mass (the point of the cell's faces nearest to that), which speeds up Lloyd's slow

@@ -81,15 +81,18 @@ void expectFandisk(int regions) {
               regions, aligned->regionsAdded, a.boundaryOnSharp, a.sharpCovered, a.areaCv, p.boundaryOnSharp);
   EXPECT_EQ(a.nonDisks, 0);
   EXPECT_GE(a.boundaryOnSharp, 3.0 * p.boundaryOnSharp);
-  // Area CV <= 0.5 asked: 0.449 at 20 regions, 0.515 at 50 (not reached at 50; held there).
-  // Stronger alignment trades it for the shares below (mu 32: on sharp 0.28 / 0.43, CV 0.72 / 0.84;
-  // mu 128: 0.36 / 0.50, CV 0.99 / 1.22).
-  EXPECT_LE(a.areaCv, regions == 20 ? 0.5 : 0.52);
-  // Not reached (issue 18 asks >= 0.6 on sharp edges and >= 0.5 covered): 0.22 / 0.26 on sharp
-  // edges, 0.28 / 0.50 covered, at 20 / 50 regions. Held at the measured figures so that any
-  // change shows.
-  EXPECT_GE(a.boundaryOnSharp, regions == 20 ? 0.20 : 0.25);
-  EXPECT_GE(a.sharpCovered, regions == 20 ? 0.26 : 0.49);
+  // Area CV <= 0.5 asked: 0.451 at 20 regions, 0.600 at 50 (not reached at 50; held there). The
+  // one-step descent (LloydParams::descentSteps 0) lowers the energy further than the checked
+  // descent did and so follows the slow sharp edges more: at 50 regions CV 0.515 -> 0.600, on
+  // sharp 0.258 -> 0.322, covered 0.503 -> 0.591. Stronger alignment trades the CV for the
+  // shares below (checked descent, mu 32: on sharp 0.28 / 0.43, CV 0.72 / 0.84; mu 128: 0.36 /
+  // 0.50, CV 0.99 / 1.22).
+  EXPECT_LE(a.areaCv, regions == 20 ? 0.46 : 0.61);
+  // Not reached (issue 18 asks >= 0.6 on sharp edges and >= 0.5 covered): 0.23 / 0.32 on sharp
+  // edges, 0.30 / 0.59 covered, at 20 / 50 regions (covered reached at 50). Held at the measured
+  // figures so that any change shows.
+  EXPECT_GE(a.boundaryOnSharp, regions == 20 ? 0.22 : 0.31);
+  EXPECT_GE(a.sharpCovered, regions == 20 ? 0.29 : 0.58);
 }
 
 TEST(Segmentation, Fandisk20FollowsSharpEdges) { expectFandisk(20); }

@@ -74,6 +74,8 @@ void logSegmentation(const SegmentationResult& r, const SegmentationParams& p, b
   if (r.refined)
     ctx.log("Fronts ran on the intrinsic Delaunay refinement of the input (" + std::to_string(r.insertedPoints) +
             " points inserted): its triangles are poor");
+  if (r.snappedFaces > 0)
+    ctx.log(std::to_string(r.snappedFaces) + " faces moved to put region boundaries on the sharp edges beside them");
   if (r.strayFacesMoved > 0)
     ctx.log(std::to_string(r.strayFacesMoved) +
             " faces given to a neighbouring region so that each region is one piece");

@@ -1,5 +1,7 @@
 #include "core/segment/geodesic_segmentation.h"
 
+#include "core/segment/boundary_snapping.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -217,62 +219,94 @@ int seedsForNonDisks(const TriMesh& mesh, const std::vector<int>& faceRegion, co
 
 }  // namespace
 
+RegionTopologyCounter::RegionTopologyCounter(const TriMesh& mesh)
+    : mesh_(mesh),
+      vertexStamp_(mesh.vertexCount(), -1),
+      faceStamp_(mesh.faceCount(), -1),
+      parent_(mesh.vertexCount()),
+      boundaryDegree_(mesh.vertexCount(), 0),
+      loopSeen_(mesh.vertexCount(), -1) {}
+
+RegionTopology RegionTopologyCounter::count(const std::vector<int>& faceRegion, const std::vector<int>& faces, int r) {
+  const int mark = ++mark_;
+  RegionTopology t;
+  int vertices = 0, edges = 0;
+  boundary_.clear();
+  const auto root = [&](int v) {
+    while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
+    return v;
+  };
+  for (int f : faces) {
+    ++t.faces;
+    for (int v : mesh_.triangles[f])
+      if (vertexStamp_[v] != mark) {
+        vertexStamp_[v] = mark;
+        parent_[v] = v;
+        boundaryDegree_[v] = 0;
+        ++vertices;
+      }
+    for (int c = 3 * f; c < 3 * f + 3; ++c) {
+      const int o = mesh_.oppositeCorner[c];
+      const bool inside = o >= 0 && faceRegion[TriMesh::face(o)] == r;
+      if (inside && o < c) continue;  // counted from the other side
+      ++edges;
+      if (inside) continue;
+      const int a = mesh_.vertex(TriMesh::next(c)), b = mesh_.vertex(TriMesh::prev(c));
+      ++boundaryDegree_[a];
+      ++boundaryDegree_[b];
+      boundary_.push_back(a);
+      boundary_.push_back(b);
+      parent_[root(a)] = root(b);
+    }
+  }
+  t.euler = vertices - edges + t.faces;
+  t.pieces = pieces(faceRegion, faces, r, mark);
+  int loops = 0;
+  bool pinched = false;
+  for (int v : boundary_) {
+    pinched = pinched || boundaryDegree_[v] != 2;
+    const int top = root(v);
+    if (loopSeen_[top] != mark) {
+      loopSeen_[top] = mark;
+      ++loops;
+    }
+  }
+  t.boundaryLoops = pinched ? -1 : loops;
+  return t;
+}
+
+int RegionTopologyCounter::pieces(const std::vector<int>& faceRegion, const std::vector<int>& faces, int r, int mark) {
+  int count = 0;
+  for (int f0 : faces) {
+    if (faceStamp_[f0] == mark) continue;
+    ++count;
+    faceStamp_[f0] = mark;
+    stack_.assign(1, f0);
+    while (!stack_.empty()) {
+      const int f = stack_.back();
+      stack_.pop_back();
+      for (int c = 3 * f; c < 3 * f + 3; ++c) {
+        const int o = mesh_.oppositeCorner[c];
+        if (o < 0) continue;
+        const int g = TriMesh::face(o);
+        if (faceStamp_[g] != mark && faceRegion[g] == r) {
+          faceStamp_[g] = mark;
+          stack_.push_back(g);
+        }
+      }
+    }
+  }
+  return count;
+}
+
 std::vector<RegionTopology> regionTopology(const TriMesh& mesh, const std::vector<int>& faceRegion, int regions) {
   std::vector<RegionTopology> topo(regions);
   const FacesByRegion g = groupFaces(faceRegion, regions);
-  int pieceCount = 0;
-  const std::vector<int> piece = piecesOf(mesh, faceRegion, &pieceCount);
-  std::vector<int> stamp(mesh.vertexCount(), -1), parent(mesh.vertexCount()), boundaryDegree(mesh.vertexCount(), 0);
-  std::vector<char> pieceSeen(pieceCount, 0);
-  std::vector<int> loopSeen(mesh.vertexCount(), -1);  // per root vertex, the last region that counted it
-  const auto root = [&](int v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  RegionTopologyCounter counter(mesh);
+  std::vector<int> faces;
   for (int r = 0; r < regions; ++r) {
-    RegionTopology& t = topo[r];
-    int vertices = 0, edges = 0;
-    std::vector<int> boundaryVertices;
-    for (int k = g.begin[r]; k < g.begin[r + 1]; ++k) {
-      const int f = g.order[k];
-      ++t.faces;
-      if (!pieceSeen[piece[f]]) {
-        pieceSeen[piece[f]] = 1;
-        ++t.pieces;
-      }
-      for (int v : mesh.triangles[f])
-        if (stamp[v] != r) {
-          stamp[v] = r;
-          parent[v] = v;
-          boundaryDegree[v] = 0;
-          ++vertices;
-        }
-      for (int c = 3 * f; c < 3 * f + 3; ++c) {
-        const int o = mesh.oppositeCorner[c];
-        const bool inside = o >= 0 && faceRegion[TriMesh::face(o)] == r;
-        if (inside && o < c) continue;  // counted from the other side
-        ++edges;
-        if (inside) continue;
-        const int a = mesh.vertex(TriMesh::next(c)), b = mesh.vertex(TriMesh::prev(c));
-        ++boundaryDegree[a];
-        ++boundaryDegree[b];
-        boundaryVertices.push_back(a);
-        boundaryVertices.push_back(b);
-        parent[root(a)] = root(b);
-      }
-    }
-    t.euler = vertices - edges + t.faces;
-    int loops = 0;
-    bool pinched = false;
-    for (int v : boundaryVertices) {
-      pinched = pinched || boundaryDegree[v] != 2;
-      const int top = root(v);
-      if (loopSeen[top] != r) {
-        loopSeen[top] = r;
-        ++loops;
-      }
-    }
-    t.boundaryLoops = pinched ? -1 : loops;
+    faces.assign(g.order.begin() + g.begin[r], g.order.begin() + g.begin[r + 1]);
+    topo[r] = counter.count(faceRegion, faces, r);
   }
   return topo;
 }
@@ -300,6 +334,7 @@ Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vect
   // A seed on a vertex (U = 0 there) owns every face around it in the labelling: no region is
   // left without a face.
   lloyd.vertexSeeds = true;
+  std::vector<int> cell;  // of the input's vertices, in the last round
   for (int round = 0;; ++round) {
     Expected<LloydResult> relaxed = geodesicLloyd(
         surface->mesh(), surface->metric, marcher, seeds, lloyd,
@@ -311,7 +346,7 @@ Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vect
     out.reseeded += relaxed->reseeded;
     seeds = relaxed->seeds;
     // The input's vertices are the surface's first ones: their cells label the input's faces.
-    const std::vector<int> cell(relaxed->cell.begin(), relaxed->cell.begin() + mesh.vertexCount());
+    cell.assign(relaxed->cell.begin(), relaxed->cell.begin() + mesh.vertexCount());
     const std::vector<double> distance(relaxed->distance.begin(), relaxed->distance.begin() + mesh.vertexCount());
     out.faceRegion = labelFaces(mesh, cell, distance);
     std::vector<int> isolated;
@@ -329,6 +364,8 @@ Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vect
     lloyd.iterations = std::max(params.iterationsAfterAdding, 1);
   }
   out.regions = static_cast<int>(seeds.size());
+  if (params.featureAlignment > 0.0 && params.snapToSharpEdges)
+    out.snappedFaces = snapBoundariesToSharpEdges(mesh, cell, out.faceRegion, out.regions);
   out.seedPosition.resize(seeds.size());
   for (size_t i = 0; i < seeds.size(); ++i) out.seedPosition[i] = seeds[i].position(surface->mesh());
   return out;

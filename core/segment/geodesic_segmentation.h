@@ -12,6 +12,8 @@
 //          ring around a tube, an input hole inside it, a whole closed component) gets a seed
 //          at its vertex farthest from its own seed, and the Lloyd iteration goes on with one
 //          more region; until every region is a disk (`regionsAdded` counts the seeds added)
+//        --with feature alignment, boundaries one face beside a sharp edge moved onto it
+//          (boundary_snapping.h: regions stay disks)
 //
 // With mu = 0 (featureAlignment = 0) the metric is uniform: plain geodesic Voronoi cells.
 // Cost: the metric O(V k) (curvature balls), Lloyd (geodesic_lloyd.h) about (1 + 2 * steps)
@@ -50,6 +52,9 @@ struct SegmentationParams {
   int maxDiskRounds = 64;
   /// Lloyd iterations after each round of added seeds.
   int iterationsAfterAdding = 4;
+  /// With feature alignment (featureAlignment > 0), move the region boundaries that run one face
+  /// beside a sharp edge onto it (boundary_snapping.h).
+  bool snapToSharpEdges = true;
   /// The surface the fronts run on: the input as it is by default (Off), since regions are
   /// unions of input faces labelled from their vertices; a refinement's inserted points would
   /// make cells finer than the faces that carry them.
@@ -67,6 +72,7 @@ struct SegmentationResult {
   int regionsAdded = 0;            ///< seeds added to split regions that were not disks
   int nonDiskRegions = 0;          ///< regions not disks in the last round (0: a result has none)
   int strayFacesMoved = 0;         ///< faces given to a neighbouring region to keep regions connected
+  int snappedFaces = 0;            ///< faces moved to put boundaries on sharp edges (snapToSharpEdges)
   int iterations = 0;              ///< Lloyd iterations accepted, over all rounds
   int reseeded = 0;                ///< seeds re-placed because their cell vanished
   double energyStart = 0.0;        ///< the Lloyd energy of the farthest-point samples
@@ -85,6 +91,20 @@ struct RegionTopology {
   bool isDisk() const { return faces > 0 && pieces == 1 && euler == 1 && boundaryLoops == 1; }
 };
 std::vector<RegionTopology> regionTopology(const TriMesh& mesh, const std::vector<int>& faceRegion, int regions);
+
+/// The same for one region at a time (`faces`: the faces labelled r), in time linear in its
+/// faces: the per-vertex scratch is kept between calls.
+class RegionTopologyCounter {
+ public:
+  explicit RegionTopologyCounter(const TriMesh& mesh);
+  RegionTopology count(const std::vector<int>& faceRegion, const std::vector<int>& faces, int r);
+
+ private:
+  int pieces(const std::vector<int>& faceRegion, const std::vector<int>& faces, int r, int mark);
+  const TriMesh& mesh_;
+  std::vector<int> vertexStamp_, faceStamp_, parent_, boundaryDegree_, loopSeen_, boundary_, stack_;
+  int mark_ = 0;
+};
 
 /// Segments `mesh` (manifold, with faces). `values` is the per-vertex field when speedField is
 /// VertexQuality (not read otherwise). Fails with InvalidInput (no faces, regions < 1 or more

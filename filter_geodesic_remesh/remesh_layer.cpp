@@ -119,13 +119,15 @@ void declareSampling(const MeshModel& mesh, RichParameterList& params) {
                                    "farthest input vertex (paper 3.1): fewer thin triangles on smooth surfaces, but "
                                    "samples may leave sharp edges (default ") +
                                (defaults.sampling.subVertexPlacement ? "true" : "false") + ")."));
-  params.addParam(RichInt(param::kCentroidalIterations, defaults.centroidalIterations, "Centroidal iterations",
-                          "Geodesic Lloyd iterations on the samples before the triangulation (0 to " +
-                              QString::number(SurfaceRemeshParams::kMaxCentroidalIterations) +
-                              "): each sample moves to the centre of mass of its Voronoi cell in the remeshing's "
-                              "metric (paper 4.2), evening out the cells; about 0.25 s per iteration at 3,800 samples "
-                              "on a 38k-vertex mesh (default " +
-                              QString::number(defaults.centroidalIterations) + ")."));
+  params.addParam(
+      RichInt(param::kCentroidalIterations, defaults.centroidalIterations, "Centroidal iterations",
+              "Geodesic Lloyd iterations on the samples before the triangulation (0 to " +
+                  QString::number(SurfaceRemeshParams::kMaxCentroidalIterations) +
+                  "): each sample moves to the centre of mass of its Voronoi cell in the remeshing's "
+                  "metric (paper 4.2), evening out the cells; the relaxation then also flips edges toward "
+                  "valence 6 (regular triangles, no new angle under 30 degrees). About 0.06 s per iteration "
+                  "at 3,800 samples on a 38k-vertex mesh (default " +
+                  QString::number(defaults.centroidalIterations) + ")."));
 }
 
 FpsParams readSampling(const RichParameterList& params) {

@@ -98,9 +98,27 @@ class EdgeQueue {
   std::vector<char> queued_;
 };
 
+/// Whether flipping the interior edge facing corner c (o on the other side), faces (x, a, b) and
+/// (y, b, a), keeps the surface: (x, y) not already an edge, the new pair nearly coplanar, the
+/// old pair too unless one is a cap (`capAllowed`), both new faces the same side up.
+bool flipKeepsSurface(const TriMesh& mesh, int c, int o, double cosFeature, bool capAllowed) {
+  const std::vector<Tri>& tris = mesh.triangles;
+  const std::vector<Vec3>& pos = mesh.positions;
+  const auto V = [&](int k) { return tris[k / 3][k % 3]; };
+  const int x = V(c), a = V(TriMesh::next(c)), b = V(TriMesh::prev(c)), y = V(o);
+  if (x == y || isNeighbour(mesh, c, y)) return false;
+  const Vec3 &px = pos[x], &pa = pos[a], &pb = pos[b], &py = pos[y];
+  const Vec3 n1 = unitNormal(px, pa, pb), n2 = unitNormal(py, pb, pa);
+  const Vec3 m1 = unitNormal(px, pa, py), m2 = unitNormal(px, py, pb);
+  if (m1.isZero() || m2.isZero()) return false;
+  if (m1.dot(m2) < cosFeature) return false;
+  if (!capAllowed && !n1.isZero() && !n2.isZero() && n1.dot(n2) < cosFeature) return false;
+  const Vec3 before = (pa - px).cross(pb - px) + (pb - py).cross(pa - py);
+  return m1.dot(before) > 0.0 && m2.dot(before) > 0.0;
+}
+
 /// Whether the interior edge facing corner c (o on the other side) should be flipped: not locally
-/// Delaunay, the new diagonal not an edge yet, no crease cut, both new faces the same side up, and
-/// the flip lowers the facing angles' sum.
+/// Delaunay, the flip keeps the surface (above) and lowers the facing angles' sum.
 bool shouldFlip(const TriMesh& mesh, int c, int o, double cosFeature, double tolerance) {
   const std::vector<Tri>& tris = mesh.triangles;
   const std::vector<Vec3>& pos = mesh.positions;
@@ -114,21 +132,18 @@ bool shouldFlip(const TriMesh& mesh, int c, int o, double cosFeature, double tol
   const double atX = angleAt(px, pa, pb), atY = angleAt(py, pb, pa);
   const double facing = atX + atY;
   if (facing <= kPi + tolerance) return false;  // locally Delaunay
-  if (isNeighbour(mesh, c, y)) return false;    // (x, y) is already an edge
-  // Feature and orientation checks: both old and new pairs nearly coplanar, same side up.
-  const Vec3 n1 = unitNormal(px, pa, pb), n2 = unitNormal(py, pb, pa);
-  const Vec3 m1 = unitNormal(px, pa, py), m2 = unitNormal(px, py, pb);
-  if (m1.isZero() || m2.isZero()) return false;
-  if (m1.dot(m2) < cosFeature) return false;
   // A cap (x, or y, within a degree of the line through a and b) is no feature: flipping it
   // away moves the surface by less than its own height, and its normal only says on which
   // side of the line rounding or a crease put x.
-  const bool cap = atX > kCapAngle || atY > kCapAngle;
-  if (!cap && !n1.isZero() && !n2.isZero() && n1.dot(n2) < cosFeature) return false;
-  const Vec3 before = (pa - px).cross(pb - px) + (pb - py).cross(pa - py);
-  if (m1.dot(before) <= 0.0 || m2.dot(before) <= 0.0) return false;
+  if (!flipKeepsSurface(mesh, c, o, cosFeature, atX > kCapAngle || atY > kCapAngle)) return false;
   // The flip must make the edge Delaunay: the new facing angles (at a and b) sum to less.
   return !(angleAt(pa, py, px) + angleAt(pb, px, py) >= facing - tolerance);
+}
+
+/// Smallest angle of the faces (x, a, y) and (x, y, b) that flipping (a, b) would make, in radians.
+double smallestAngleAfterFlip(const Vec3& px, const Vec3& pa, const Vec3& pb, const Vec3& py) {
+  return std::min({angleAt(px, pa, py), angleAt(pa, py, px), angleAt(py, px, pa), angleAt(px, py, pb),
+                   angleAt(py, pb, px), angleAt(pb, px, py)});
 }
 
 /// Flips the edge facing corner c (o on the other side): faces (x, a, b), (y, b, a) become
@@ -179,6 +194,51 @@ Expected<DelaunayFlipResult> flipToDelaunay(TriMesh& mesh, const DelaunayFlipPar
     for (int k : {f0, f0 + 2, g0, g0 + 2}) work.push(k);
   }
   // oppositeCorner is up to date and flips keep the topology: only the vertex lists change.
+  if (r.flips > 0) rebuildVertexCorners(mesh);
+  return r;
+}
+
+Expected<DelaunayFlipResult> flipTowardValenceSix(TriMesh& mesh, const ValenceFlipParams& params) {
+  if (Status s = checkFlipInput(mesh); !s) return s;
+  DelaunayFlipResult r;
+  const std::vector<int>& opp = mesh.oppositeCorner;
+  const int nv = mesh.vertexCount();
+  std::vector<int> valence(nv, 0), target(nv, 6);
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c) {
+    ++valence[mesh.vertex(c)];
+    if (opp[c] < 0) target[mesh.vertex(TriMesh::next(c))] = 4;  // one boundary edge starts there
+  }
+  for (int v = 0; v < nv; ++v) valence[v] += target[v] == 4;  // a boundary fan has one edge more than faces
+  const auto excess = [&](int v, int change) {
+    const int e = valence[v] + change - target[v];
+    return e * e;
+  };
+  const double cosFeature = std::cos(params.featureAngleDegrees * kPi / 180.0);
+  const double minAngle = params.minAngleDegrees * kPi / 180.0;
+  const auto V = [&](int k) { return mesh.triangles[k / 3][k % 3]; };
+  for (int pass = 0; pass < params.passes; ++pass) {
+    int flips = 0;
+    for (int c = 0; c < 3 * mesh.faceCount(); ++c) {
+      const int o = opp[c];
+      if (o < c) continue;  // each interior edge once (o < 0: boundary)
+      const int x = V(c), a = V(TriMesh::next(c)), b = V(TriMesh::prev(c)), y = V(o);
+      if (valence[a] <= 3 || valence[b] <= 3) continue;
+      if (excess(a, -1) + excess(b, -1) + excess(x, 1) + excess(y, 1) >=
+          excess(a, 0) + excess(b, 0) + excess(x, 0) + excess(y, 0))
+        continue;
+      const std::vector<Vec3>& pos = mesh.positions;
+      if (smallestAngleAfterFlip(pos[x], pos[a], pos[b], pos[y]) < minAngle) continue;
+      if (!flipKeepsSurface(mesh, c, o, cosFeature, false)) continue;
+      flipEdge(mesh, c, o);
+      --valence[a];
+      --valence[b];
+      ++valence[x];
+      ++valence[y];
+      ++flips;
+    }
+    r.flips += flips;
+    if (flips == 0) break;
+  }
   if (r.flips > 0) rebuildVertexCorners(mesh);
   return r;
 }

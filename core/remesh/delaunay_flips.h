@@ -47,4 +47,16 @@ struct DelaunayFlipResult {
 /// mesh/orientation.h).
 Expected<DelaunayFlipResult> flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& params = {});
 
+/// Flips toward valence 6 (4 on the boundary), as isotropic remeshing does (Botsch & Kobbelt
+/// 2004): an interior edge (a, b) becomes (x, y) when that lowers the sum of squared valence
+/// excesses of a, b, x, y, keeps the surface (the same crease and orientation checks as above)
+/// and leaves no angle of the two new faces under minAngleDegrees. The result is no longer
+/// Delaunay everywhere: evener valences for evener angles after a relaxation. Fails as above.
+struct ValenceFlipParams {
+  double minAngleDegrees = 30.0;      ///< no new face with a smaller angle
+  double featureAngleDegrees = 30.0;  ///< as DelaunayFlipParams::featureAngleDegrees
+  int passes = 5;                     ///< sweeps over the edges at most
+};
+Expected<DelaunayFlipResult> flipTowardValenceSix(TriMesh& mesh, const ValenceFlipParams& params = {});
+
 }  // namespace gr

@@ -124,7 +124,8 @@ Status relaxDual(const FrontSurface& front, const TriMesh& surface, const Surfac
     if (Status s = originsOnSurface(front.geodesic, triangulation.origin); !s) return s;
   const TriMesh& relaxOn = front.geodesic.refined ? surface : front.fine->mesh;
   Expected<RelaxationResult> relaxed =
-      relaxOnSurface(triangulation.mesh, triangulation.origin, relaxOn, params.relaxation);
+      relaxOnSurface(triangulation.mesh, triangulation.origin, relaxOn,
+                     params.centroidalIterations > 0 ? params.relaxation.regularised() : params.relaxation);
   if (!relaxed) return relaxed.status();
   result = *relaxed;
   times.relaxation += lap(clock);

@@ -78,7 +78,9 @@ struct SurfaceRemeshParams {
   GeodesicSurfaceParams surface;
   /// Geodesic Lloyd iterations on the samples before the triangulation (geodesic_lloyd.h; paper
   /// §4.2), in the remeshing's metric with the metric's area as mass, so that an adaptive density
-  /// 1/F^2 is kept; boundary samples stay. 0 = the farthest-point samples as they are.
+  /// 1/F^2 is kept; boundary samples stay. 0 = the farthest-point samples as they are. With
+  /// centroidal iterations the relaxation aims at regular triangles too
+  /// (RelaxationParams::regularised: valence flips, moves up to 0.1 of the ring off the surface).
   int centroidalIterations = 0;
   static constexpr int kMaxCentroidalIterations = 50;  ///< largest centroidalIterations
   /// Also measure the output: angle statistics and the surface distance to the input both ways

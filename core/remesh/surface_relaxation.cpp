@@ -349,6 +349,11 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
     Expected<DelaunayFlipResult> flipped = flipToDelaunay(output, params.flips);
     if (!flipped) return flipped.status();
     r.flips += flipped->flips;
+    if (params.valenceFlips) {
+      Expected<DelaunayFlipResult> valence = flipTowardValenceSix(output, params.valence);
+      if (!valence) return valence.status();
+      r.flips += valence->flips;
+    }
     ++r.iterations;
   }
   r.moves = relaxer.moves();

@@ -24,6 +24,7 @@
 // Cost: O(iterations * F_out * (valence + walk length)); the input is read only where walks go.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "core/base/status.h"
@@ -44,6 +45,26 @@ struct RelaxationParams {
   /// samples sit, are not smoothed away (the surface error stays that of the triangulation).
   double maxDeviation = 0.05;
   DelaunayFlipParams flips;  ///< the flips after each round
+  /// After the Delaunay flips of each round, flips toward valence 6 (flipTowardValenceSix): evener
+  /// angles, no longer Delaunay everywhere. Off by default; the remeshes' centroidal relaxation
+  /// turns it on (regularised(), below).
+  bool valenceFlips = false;
+  ValenceFlipParams valence;
+
+  /// These options with regular triangles as the aim: valence flips on (no new angle under 30
+  /// degrees, creases as the Delaunay flips see them) and moves up to 0.1 of the ring's edge
+  /// length off the surface. bunny00 at 10%, 10 rounds, with 10 centroidal iterations against
+  /// none: angle standard deviation 10.7 -> 7.0 degrees (CGAL's isotropic remeshing 7.2),
+  /// smallest angle 30 degrees, two-sided Hausdorff 0.64 -> 0.85% of the diagonal (CGAL 1.03%;
+  /// tests/remesh/test_remesh_quality.cpp).
+  RelaxationParams regularised() const {
+    RelaxationParams p = *this;
+    p.valenceFlips = true;
+    p.valence.featureAngleDegrees = flips.featureAngleDegrees;
+    p.maxDeviation = std::max(maxDeviation, kRegularMaxDeviation);
+    return p;
+  }
+  static constexpr double kRegularMaxDeviation = 0.1;
 };
 
 struct RelaxationResult {

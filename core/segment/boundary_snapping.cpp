@@ -49,8 +49,7 @@ class MinCut {
     add(b, a, capacity);
   }
   void run(int source, int sink) {
-    while (augment(source, sink)) {
-    }
+    while (augment(source, sink)) {}
     reached_ = reach(source);
   }
   bool onSourceSide(int v) const { return reached_[v] != 0; }

@@ -8,7 +8,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <map>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "core/base/math.h"
 #include "core/measure/evaluation.h"
@@ -172,6 +176,87 @@ TEST(DelaunayFlips, CreaseIsKept) {
   params.featureAngleDegrees = 180.0;
   EXPECT_GT(flipCount(unchecked, params), 0);
   EXPECT_LT(creaseEdgesLeft(unchecked, n), n);
+}
+
+/// Sum over vertices of (valence - 6)^2 (4 on the boundary), valences counted from the triangle
+/// list alone (distinct neighbours), independently of TriMesh's adjacency.
+int valenceExcess(const TriMesh& m) {
+  std::vector<std::vector<int>> neighbours(m.vertexCount());
+  std::map<std::pair<int, int>, int> edgeFaces;
+  for (const Tri& t : m.triangles)
+    for (int k = 0; k < 3; ++k) {
+      neighbours[t[k]].push_back(t[(k + 1) % 3]);
+      neighbours[t[(k + 1) % 3]].push_back(t[k]);
+      ++edgeFaces[std::minmax(t[k], t[(k + 1) % 3])];
+    }
+  std::vector<char> boundary(m.vertexCount(), 0);
+  for (const auto& [e, faces] : edgeFaces)
+    if (faces == 1) boundary[e.first] = boundary[e.second] = 1;
+  int sum = 0;
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    std::sort(neighbours[v].begin(), neighbours[v].end());
+    const int valence =
+        static_cast<int>(std::unique(neighbours[v].begin(), neighbours[v].end()) - neighbours[v].begin());
+    const int e = valence - (boundary[v] ? 4 : 6);
+    sum += e * e;
+  }
+  return sum;
+}
+
+// Flips toward valence 6 on a grid with random diagonals (valences 4 to 8): the valence excess
+// falls, the topology is the same (recounted), no angle under the bound appears (the grid's
+// triangles have 45 and 90 degrees), and a flat grid stays flat.
+TEST(ValenceFlips, EvenTheValencesAndKeepTheMesh) {
+  TriMesh m = randomDiagonalGrid(20, 0.0, 3);
+  const int before = valenceExcess(m);
+  const test::Recount in = test::recount(m.triangles, m.vertexCount());
+  const Expected<DelaunayFlipResult> r = flipTowardValenceSix(m);
+  ASSERT_TRUE(r) << r.status().message;
+  EXPECT_GT(r->flips, 0);
+  std::printf("valence excess %d -> %d after %d flips\n", before, valenceExcess(m), r->flips);
+  EXPECT_LT(valenceExcess(m), before);
+  const test::Recount out = test::recount(m.triangles, m.vertexCount());
+  EXPECT_TRUE(out.manifoldEdges && out.manifoldVertices && out.oriented);
+  EXPECT_EQ(out.components, in.components);
+  EXPECT_EQ(out.boundaryLoops, in.boundaryLoops);
+  EXPECT_EQ(out.genusSum, in.genusSum);
+  EXPECT_EQ(m.faceCount(), 2 * 20 * 20);
+  EXPECT_GE(angleStatistics(m).minDegrees, 30.0 - 1e-9);
+  expectAdjacencyAsIfRebuilt(m);
+}
+
+/// The grid's edges on the line x = 0.5 (both ends there), after folding it there by 90 degrees.
+int foldEdges(const TriMesh& m) {
+  std::map<std::pair<int, int>, int> seen;
+  for (const Tri& t : m.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      if (std::abs(m.positions[a].x() - 0.5) < 1e-12 && std::abs(m.positions[b].x() - 0.5) < 1e-12 &&
+          std::abs(m.positions[a].z()) < 1e-12 && std::abs(m.positions[b].z()) < 1e-12)
+        seen[std::minmax(a, b)] = 1;
+    }
+  return static_cast<int>(seen.size());
+}
+
+TEST(ValenceFlips, CreaseIsKept) {
+  // Seed 4: diagonals for which some edges of the line x = 0.5 are worth flipping when flat.
+  const unsigned seed = 4;
+  const auto grid = [seed](bool fold) {
+    TriMesh m = randomDiagonalGrid(20, 0.0, seed);
+    for (Vec3& p : m.positions)
+      if (fold && p.x() > 0.5 + 1e-12) p = Vec3(0.5, p.y(), p.x() - 0.5);
+    return m;
+  };
+  ValenceFlipParams anyAngle;  // the angle bound alone would keep those edges (new angles of 27 deg)
+  anyAngle.minAngleDegrees = 0.0;
+  TriMesh folded = grid(true);
+  ASSERT_EQ(foldEdges(folded), 20);
+  ASSERT_TRUE(flipTowardValenceSix(folded, anyAngle));
+  EXPECT_EQ(foldEdges(folded), 20);
+  // The fixture tests something: on the same grid left flat, some of those edges are flipped.
+  TriMesh flat = grid(false);
+  ASSERT_TRUE(flipTowardValenceSix(flat, anyAngle));
+  EXPECT_LT(foldEdges(flat), 20);
 }
 
 // A cap: x on the segment ab up to a rounding-sized offset out of the plane, as three samples on

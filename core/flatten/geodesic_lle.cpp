@@ -1,0 +1,345 @@
+#include "core/flatten/geodesic_lle.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <utility>
+
+#include "core/base/math.h"
+#include "core/geodesic/farthest_point_sampling.h"
+#include "core/geodesic/fast_marching.h"
+
+namespace gr {
+namespace {
+
+/// A face whose UV area is at most this share of the mean |area| counts as degenerate.
+constexpr double kDegenerateArea = 1e-10;
+/// Rounds of local untangling before the whole patch is mapped by Tutte's embedding instead.
+constexpr int kUntangleRounds = 20;
+
+Status checkPatch(const TriMesh& patch, const LleFlatteningParams& p) {
+  const Topology& t = patch.topology;
+  if (patch.faceCount() == 0) return invalidInput("LLE flattening: the patch has no faces");
+  if (!t.isManifold())
+    return nonManifold("LLE flattening needs a manifold patch; this one has " + std::to_string(t.nonManifoldEdges) +
+                       " non-manifold edges and " + std::to_string(t.nonManifoldVertices) + " non-manifold vertices");
+  if (t.components != 1 || t.boundaryLoops != 1 || t.eulerCharacteristic != 1)
+    return invalidInput("LLE flattening needs a topological disk (1 component, 1 boundary loop, Euler characteristic "
+                        "1); this patch has " +
+                        std::to_string(t.components) + " components, " + std::to_string(t.boundaryLoops) +
+                        " boundary loops, Euler characteristic " + std::to_string(t.eulerCharacteristic) +
+                        " (genus " + std::to_string(t.genus) + ")");
+  if (t.isolatedVertices > 0)
+    return invalidInput("LLE flattening: " + std::to_string(t.isolatedVertices) + " vertices are in no face");
+  for (const Vec3& q : patch.positions)
+    if (!q.allFinite()) return invalidInput("LLE flattening: a vertex position is not finite");
+  if (p.basePoints < 4) return invalidInput("LLE flattening: at least 4 base points, got " + std::to_string(p.basePoints));
+  if (p.basePoints > patch.vertexCount())
+    return invalidInput("LLE flattening: " + std::to_string(p.basePoints) + " base points asked on " +
+                        std::to_string(patch.vertexCount()) + " vertices");
+  if (p.neighbours < 3 || p.neighbours >= p.basePoints)
+    return invalidInput("LLE flattening: the neighbours K must be >= 3 and below the base points B (K = " +
+                        std::to_string(p.neighbours) + ", B = " + std::to_string(p.basePoints) + ")");
+  if (!(p.regularisation >= 0.0) || !std::isfinite(p.regularisation))
+    return invalidInput("LLE flattening: the regulariser must be finite and >= 0");
+  return Status::ok();
+}
+
+/// Reconstruction weights of a point from its neighbours, given the point's distances to them
+/// (`toPoint`) and their pairwise distances (`between`, K x K): the local Gram matrix of the
+/// distances, regularised, solved for G w = 1, normalised to sum 1.
+Eigen::VectorXd lleWeights(const Eigen::VectorXd& toPoint, const Eigen::MatrixXd& between, double regularisation) {
+  const int k = static_cast<int>(toPoint.size());
+  Eigen::MatrixXd g(k, k);
+  for (int a = 0; a < k; ++a)
+    for (int b = 0; b < k; ++b)
+      g(a, b) = 0.5 * (toPoint[a] * toPoint[a] + toPoint[b] * toPoint[b] - between(a, b) * between(a, b));
+  const double trace = g.trace();
+  g.diagonal().array() += regularisation * (trace > 0.0 ? trace / k : 1.0) + 1e-300;
+  Eigen::VectorXd w = g.ldlt().solve(Eigen::VectorXd::Ones(k));
+  const double sum = w.sum();
+  if (!std::isfinite(sum) || std::abs(sum) < 1e-300) return Eigen::VectorXd::Constant(k, 1.0 / k);
+  return w / sum;
+}
+
+/// The K entries of `row` (excluding `self`) with the smallest values.
+std::vector<int> nearest(const std::vector<double>& row, int k, int self) {
+  std::vector<int> order(row.size());
+  std::iota(order.begin(), order.end(), 0);
+  if (self >= 0) order.erase(order.begin() + self);
+  std::partial_sort(order.begin(), order.begin() + k, order.end(), [&](int a, int b) { return row[a] < row[b]; });
+  order.resize(k);
+  return order;
+}
+
+struct BaseField {
+  std::vector<int> base;                  ///< base vertices
+  std::vector<std::vector<double>> dist;  ///< dist[j][v]: distance from base j to vertex v
+};
+
+Expected<BaseField> baseDistances(const TriMesh& patch, const LleFlatteningParams& p, Progress& progress) {
+  BaseField f;
+  FastMarcher marcher(patch, Metric::uniform());
+  FpsParams fps;
+  fps.targetCount = p.basePoints;
+  fps.seed = p.seed;
+  fps.boundaryPriority = 1.0;
+  Expected<FpsResult> sampled = farthestPointSampling(marcher, fps, progress.sub(0.0, 0.1));
+  if (!sampled) return sampled.status();
+  f.base = sampled->samples;
+  f.dist.resize(f.base.size());
+  for (size_t j = 0; j < f.base.size(); ++j) {
+    if (!progress.report(0.1 + 0.6 * double(j) / f.base.size(), "Geodesic LLE: fronts")) return cancelled();
+    marcher.reset();
+    if (Status s = marcher.addSource(f.base[j], 0); !s) return s;
+    if (Status s = marcher.propagate(); !s) return s;
+    f.dist[j] = marcher.distance();
+  }
+  return f;
+}
+
+/// The base points' embedding: LLE on the bases, then the 2x2 metric correction.
+std::vector<Vec2> embedBases(const BaseField& f, const LleFlatteningParams& p, bool* corrected) {
+  const int nb = static_cast<int>(f.base.size()), k = p.neighbours;
+  Eigen::MatrixXd iw = Eigen::MatrixXd::Identity(nb, nb);
+  std::vector<std::pair<int, int>> pairs;
+  for (int i = 0; i < nb; ++i) {
+    std::vector<double> row(nb);
+    for (int j = 0; j < nb; ++j) row[j] = f.dist[j][f.base[i]];
+    const std::vector<int> nn = nearest(row, k, i);
+    Eigen::VectorXd toPoint(k);
+    Eigen::MatrixXd between(k, k);
+    for (int a = 0; a < k; ++a) {
+      toPoint[a] = row[nn[a]];
+      for (int b = 0; b < k; ++b) between(a, b) = f.dist[nn[a]][f.base[nn[b]]];
+      pairs.push_back({i, nn[a]});
+    }
+    const Eigen::VectorXd w = lleWeights(toPoint, between, p.regularisation);
+    for (int a = 0; a < k; ++a) iw(i, nn[a]) -= w[a];
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(iw.transpose() * iw);
+  std::vector<Vec2> y(nb);
+  for (int i = 0; i < nb; ++i) y[i] = Vec2(eigen.eigenvectors()(i, 1), eigen.eigenvectors()(i, 2));
+  // The metric correction: (y_i - y_j)^T S (y_i - y_j) = d_ij^2 in the least-squares sense.
+  Eigen::MatrixXd a(pairs.size(), 3);
+  Eigen::VectorXd rhs(pairs.size());
+  for (size_t r = 0; r < pairs.size(); ++r) {
+    const Vec2 e = y[pairs[r].first] - y[pairs[r].second];
+    a.row(r) << e.x() * e.x(), 2.0 * e.x() * e.y(), e.y() * e.y();
+    const double d = f.dist[pairs[r].second][f.base[pairs[r].first]];
+    rhs[r] = d * d;
+  }
+  const Eigen::Vector3d s = a.colPivHouseholderQr().solve(rhs);
+  Eigen::Matrix2d metric;
+  metric << s[0], s[1], s[1], s[2];
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> se(metric);
+  *corrected = se.eigenvalues().minCoeff() > 0.0;
+  if (*corrected) {
+    const Eigen::Matrix2d root = se.operatorSqrt();
+    for (Vec2& q : y) q = root * q;
+  }
+  return y;
+}
+
+/// Nyström: each vertex from its K nearest base points.
+std::vector<Vec2> extend(const TriMesh& patch, const BaseField& f, const std::vector<Vec2>& y,
+                         const LleFlatteningParams& p) {
+  const int nb = static_cast<int>(f.base.size()), k = p.neighbours;
+  std::vector<int> baseIndex(patch.vertexCount(), -1);
+  for (int j = 0; j < nb; ++j) baseIndex[f.base[j]] = j;
+  std::vector<Vec2> uv(patch.vertexCount());
+  std::vector<double> row(nb);
+  Eigen::VectorXd toPoint(k);
+  Eigen::MatrixXd between(k, k);
+  for (int v = 0; v < patch.vertexCount(); ++v) {
+    if (baseIndex[v] >= 0) {
+      uv[v] = y[baseIndex[v]];
+      continue;
+    }
+    for (int j = 0; j < nb; ++j) row[j] = f.dist[j][v];
+    const std::vector<int> nn = nearest(row, k, -1);
+    for (int a = 0; a < k; ++a) {
+      toPoint[a] = row[nn[a]];
+      for (int b = 0; b < k; ++b) between(a, b) = f.dist[nn[a]][f.base[nn[b]]];
+    }
+    const Eigen::VectorXd w = lleWeights(toPoint, between, p.regularisation);
+    Vec2 q = Vec2::Zero();
+    for (int a = 0; a < k; ++a) q += w[a] * y[nn[a]];
+    uv[v] = q;
+  }
+  return uv;
+}
+
+/// Faces turned over (against the majority) or of zero area; turns the whole map over first if
+/// most faces are.
+int foldedFaces(const TriMesh& patch, std::vector<Vec2>& uv) {
+  std::vector<double> area = uvSignedAreas(patch, uv);
+  double sum = 0.0, mean = 0.0;
+  for (double a : area) {
+    sum += a;
+    mean += std::abs(a);
+  }
+  mean /= std::max<size_t>(area.size(), 1);
+  if (sum < 0.0) {
+    for (Vec2& q : uv) q.y() = -q.y();
+    for (double& a : area) a = -a;
+  }
+  int folded = 0;
+  for (double a : area) folded += !(a > kDegenerateArea * mean);
+  return folded;
+}
+
+/// Local untangling: the vertices of folded faces (and their neighbours, from the second round)
+/// move to the mean of their neighbours' UVs, a few rounds; the faces still folded.
+int untangle(const TriMesh& patch, std::vector<Vec2>& uv, int rounds) {
+  std::vector<char> boundary(patch.vertexCount(), 0);
+  for (int c = 0; c < 3 * patch.faceCount(); ++c)
+    if (patch.oppositeCorner[c] < 0) boundary[patch.vertex(TriMesh::next(c))] = boundary[patch.vertex(TriMesh::prev(c))] = 1;
+  int folded = foldedFaces(patch, uv);
+  std::vector<char> moving(patch.vertexCount(), 0);
+  for (int round = 0; round < rounds && folded > 0; ++round) {
+    const std::vector<double> area = uvSignedAreas(patch, uv);
+    double mean = 0.0;
+    for (double a : area) mean += std::abs(a);
+    mean /= std::max(1, patch.faceCount());
+    for (int f = 0; f < patch.faceCount(); ++f)
+      if (!(area[f] > kDegenerateArea * mean))
+        for (int v : patch.triangles[f]) moving[v] = 1;
+    for (int v = 0; v < patch.vertexCount(); ++v) {
+      if (!moving[v]) continue;
+      Vec2 sum = Vec2::Zero();
+      int count = 0;
+      for (int k = patch.vertexCornerBegin[v]; k < patch.vertexCornerBegin[v + 1]; ++k) {
+        const int c = patch.vertexCorners[k];
+        for (int w : {patch.vertex(TriMesh::next(c)), patch.vertex(TriMesh::prev(c))})
+          if (!boundary[v] || boundary[w]) {  // a boundary vertex follows its boundary neighbours
+            sum += uv[w];
+            ++count;
+          }
+      }
+      if (count > 0) uv[v] = sum / count;
+    }
+    folded = foldedFaces(patch, uv);
+  }
+  return folded;
+}
+
+/// The boundary loop of a disk, in order.
+std::vector<int> boundaryLoop(const TriMesh& patch) {
+  std::vector<int> next(patch.vertexCount(), -1);
+  int start = -1;
+  for (int c = 0; c < 3 * patch.faceCount(); ++c)
+    if (patch.oppositeCorner[c] < 0) {
+      next[patch.vertex(TriMesh::next(c))] = patch.vertex(TriMesh::prev(c));
+      start = patch.vertex(TriMesh::next(c));
+    }
+  std::vector<int> loop;
+  for (int v = start; v >= 0 && (loop.empty() || v != start) && loop.size() <= next.size(); v = next[v])
+    loop.push_back(v);
+  return loop;
+}
+
+/// Tutte's embedding: the boundary on the unit circle by arc length, each interior vertex at the
+/// mean of its neighbours (one sparse solve). Scaled to the patch's area.
+Expected<std::vector<Vec2>> tutteEmbedding(const TriMesh& patch) {
+  const std::vector<int> loop = boundaryLoop(patch);
+  const int n = patch.vertexCount();
+  std::vector<Vec2> uv(n, Vec2::Zero());
+  std::vector<char> onBoundary(n, 0);
+  double perimeter = 0.0;
+  for (size_t i = 0; i < loop.size(); ++i)
+    perimeter += (patch.positions[loop[(i + 1) % loop.size()]] - patch.positions[loop[i]]).norm();
+  double along = 0.0;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const double t = perimeter > 0.0 ? 2.0 * kPi * along / perimeter : 2.0 * kPi * i / loop.size();
+    uv[loop[i]] = Vec2(std::cos(t), std::sin(t));
+    onBoundary[loop[i]] = 1;
+    along += (patch.positions[loop[(i + 1) % loop.size()]] - patch.positions[loop[i]]).norm();
+  }
+  std::vector<int> index(n, -1);
+  int interior = 0;
+  for (int v = 0; v < n; ++v)
+    if (!onBoundary[v]) index[v] = interior++;
+  if (interior == 0) return uv;
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(interior, 2);
+  for (int c = 0; c < 3 * patch.faceCount(); ++c) {  // each directed edge (v, w) once per face
+    const int v = patch.vertex(c), w = patch.vertex(TriMesh::next(c));
+    for (const auto& [from, to] : {std::pair<int, int>{v, w}, std::pair<int, int>{w, v}}) {
+      if (index[from] < 0) continue;
+      // An interior edge is seen from both its faces, a boundary edge from one: weight 1/2 per
+      // sighting keeps the weights positive and symmetric (1 per interior edge).
+      entries.emplace_back(index[from], index[from], 0.5);
+      if (index[to] >= 0)
+        entries.emplace_back(index[from], index[to], -0.5);
+      else
+        rhs.row(index[from]) += 0.5 * uv[to].transpose();
+    }
+  }
+  Eigen::SparseMatrix<double> l(interior, interior);
+  l.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(l);
+  if (solver.info() != Eigen::Success) return internalError("LLE flattening: Tutte's system could not be factorised");
+  const Eigen::MatrixXd x = solver.solve(rhs);
+  for (int v = 0; v < n; ++v)
+    if (index[v] >= 0) uv[v] = x.row(index[v]).transpose();
+  return uv;
+}
+
+/// Scales uv so that its area is the patch's.
+void matchArea(const TriMesh& patch, std::vector<Vec2>& uv) {
+  double area3 = 0.0, area2 = 0.0;
+  for (int f = 0; f < patch.faceCount(); ++f) {
+    const Tri& t = patch.triangles[f];
+    area3 += 0.5 * (patch.positions[t[1]] - patch.positions[t[0]]).cross(patch.positions[t[2]] - patch.positions[t[0]]).norm();
+  }
+  for (double a : uvSignedAreas(patch, uv)) area2 += std::abs(a);
+  if (!(area2 > 0.0)) return;
+  const double s = std::sqrt(area3 / area2);
+  for (Vec2& q : uv) q *= s;
+}
+
+}  // namespace
+
+std::vector<double> uvSignedAreas(const TriMesh& mesh, const std::vector<Vec2>& uv) {
+  std::vector<double> area(mesh.faceCount());
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    const Vec2 a = uv[t[1]] - uv[t[0]], b = uv[t[2]] - uv[t[0]];
+    area[f] = 0.5 * (a.x() * b.y() - a.y() * b.x());
+  }
+  return area;
+}
+
+Expected<LleFlatteningResult> flattenGeodesicLle(const TriMesh& patch, const LleFlatteningParams& params,
+                                                 Progress progress) {
+  if (Status s = checkPatch(patch, params); !s) return s;
+  LleFlatteningResult r;
+  if (params.boundary == LleBoundary::Free) {
+    Expected<BaseField> field = baseDistances(patch, params, progress);
+    if (!field) return field.status();
+    r.basePoints = field->base;
+    if (!progress.report(0.75, "Geodesic LLE: embedding")) return cancelled();
+    const std::vector<Vec2> y = embedBases(*field, params, &r.metricCorrected);
+    r.uv = extend(patch, *field, y, params);
+    r.foldedBeforeRepair = foldedFaces(patch, r.uv);
+    if (r.foldedBeforeRepair == 0 || untangle(patch, r.uv, kUntangleRounds) == 0) {
+      if (!r.metricCorrected) matchArea(patch, r.uv);
+      return r;
+    }
+  }
+  Expected<std::vector<Vec2>> tutte = tutteEmbedding(patch);
+  if (!tutte) return tutte.status();
+  r.uv = std::move(*tutte);
+  r.tutte = true;
+  foldedFaces(patch, r.uv);  // orientation as the patch's
+  matchArea(patch, r.uv);
+  return r;
+}
+
+}  // namespace gr

@@ -1,0 +1,69 @@
+// Geodesic LLE flattening of a disk with a Nyström extension (Peyré & Cohen 2006, §4.3): a map
+// of a patch to the plane without a linear system over all its vertices.
+//
+//   patch (a topological disk) --farthestPointSampling--> B base points
+//     --B fronts (FastMarcher)--> d(v, base j) for every vertex v and base j
+//     --per base i: its K nearest bases, the local Gram matrix of the geodesic distances
+//       G_jk = (d_ij^2 + d_ik^2 - d_jk^2) / 2, weights w from (G + r tr(G)/K I) w = 1, sum w = 1
+//       (Roweis & Saul 2000)--> W (B x B)
+//     --the 2nd and 3rd eigenvectors of (I - W)^T (I - W) (Eigen, dense, B x B)--> y_1..y_B
+//     --a 2x2 metric correction S (least squares: (y_i - y_j)^T S (y_i - y_j) = d_ij^2 over the
+//       neighbour pairs; LLE's own normalisation makes the embedding's covariance the identity,
+//       which squashes an elongated patch) --> base points in the plane, at the patch's scale
+//     --Nyström (Bengio et al. 2003): each vertex's weights on its K nearest bases, from the same
+//       distances, and uv_v = sum_j w_j y_j
+//     --a UV triangle turned over or of zero area: its vertices (and, round after round, their
+//       neighbours) move to the mean of their neighbours' UVs, up to 20 rounds; if a fold is
+//       left, the whole patch is mapped again by Tutte's embedding (positive barycentric weights,
+//       the boundary on a circle by arc length), injective by Tutte's theorem; the result says so.
+//
+// Boundary: Free (LLE's own) or Circle (Tutte's embedding from the start). Cost: B fronts
+// O(B V log V), the Nyström extension O(V B), the eigenproblem O(B^3); the Tutte fallback one
+// sparse solve.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/base/progress.h"
+#include "core/base/status.h"
+#include "core/mesh/tri_mesh.h"
+
+namespace gr {
+
+using Vec2 = Eigen::Vector2d;
+
+enum class LleBoundary { Free, Circle };
+
+struct LleFlatteningParams {
+  int basePoints = 100;  ///< B, farthest-point samples of the patch (the paper's 100); >= 4
+  int neighbours = 8;    ///< K nearest base points per reconstruction, 3 <= K < B
+  /// Tikhonov regulariser of the local Gram matrices, relative to their trace / K (Roweis & Saul
+  /// use 1e-3 when K exceeds the dimension, 2 here).
+  double regularisation = 1e-3;
+  LleBoundary boundary = LleBoundary::Free;
+  unsigned seed = 0;  ///< the sampling's start
+};
+
+struct LleFlatteningResult {
+  std::vector<Vec2> uv;          ///< per vertex of the patch
+  std::vector<int> basePoints;   ///< the B base vertices
+  int foldedBeforeRepair = 0;    ///< UV triangles turned over or of zero area after the Nyström step
+                                 ///< (then untangled locally, or the map is Tutte's)
+  bool tutte = false;            ///< the map is Tutte's embedding (Circle asked, or the repair)
+  bool metricCorrected = false;  ///< the 2x2 correction was applied (positive definite fit)
+};
+
+/// Flattens `patch`, which must be one connected topological disk (one boundary loop, Euler
+/// characteristic 1, manifold). Fails with InvalidInput (not a disk: says which of the counts is
+/// off; fewer vertices than B; B < 4; K out of range; a non-finite position), NonManifold, or
+/// Cancelled.
+Expected<LleFlatteningResult> flattenGeodesicLle(const TriMesh& patch, const LleFlatteningParams& params = {},
+                                                 Progress progress = {});
+
+/// Signed UV area of each face (positive: the face's orientation kept).
+std::vector<double> uvSignedAreas(const TriMesh& mesh, const std::vector<Vec2>& uv);
+
+}  // namespace gr

@@ -1,0 +1,151 @@
+// Geodesic LLE flattening (core/flatten/geodesic_lle.h). Oracles: Sander et al.'s L2 stretch
+// (2001), computed here from the 3D and UV triangles, which is 1 exactly for an isometry up to a
+// global scale; the UV orientation of every face (signed areas recomputed here); patches whose
+// flattening is known (a plane, a cylinder cut open: developable) and a hemisphere (not).
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "core/flatten/geodesic_lle.h"
+#include "tests/support/test_support.h"
+
+namespace gr {
+namespace {
+
+constexpr double kPiValue = 3.14159265358979323846;
+
+/// Sander's L2 stretch of the map UV -> 3D over the whole mesh, after scaling the UVs so that
+/// their total area is the 3D area.
+double l2Stretch(const TriMesh& m, const std::vector<Vec2>& uv) {
+  double area3 = 0.0, area2 = 0.0;
+  for (const Tri& t : m.triangles) {
+    area3 += 0.5 * (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]).norm();
+    const Vec2 a = uv[t[1]] - uv[t[0]], b = uv[t[2]] - uv[t[0]];
+    area2 += 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+  }
+  const double scale = std::sqrt(area3 / area2);
+  double sum = 0.0;
+  for (const Tri& t : m.triangles) {
+    const Vec3 &q1 = m.positions[t[0]], &q2 = m.positions[t[1]], &q3 = m.positions[t[2]];
+    const Vec2 p1 = scale * uv[t[0]], p2 = scale * uv[t[1]], p3 = scale * uv[t[2]];
+    const double a2 = ((p2.x() - p1.x()) * (p3.y() - p1.y()) - (p3.x() - p1.x()) * (p2.y() - p1.y()));
+    if (a2 == 0.0) return INFINITY;
+    const Vec3 ss = (q1 * (p2.y() - p3.y()) + q2 * (p3.y() - p1.y()) + q3 * (p1.y() - p2.y())) / a2;
+    const Vec3 st = (q1 * (p3.x() - p2.x()) + q2 * (p1.x() - p3.x()) + q3 * (p2.x() - p1.x())) / a2;
+    const double area = 0.5 * (q2 - q1).cross(q3 - q1).norm();
+    sum += area * 0.5 * (ss.squaredNorm() + st.squaredNorm());
+  }
+  return std::sqrt(sum / area3);
+}
+
+/// Faces whose UV orientation differs from the majority's, or whose UV area is 0.
+int flippedFaces(const TriMesh& m, const std::vector<Vec2>& uv) {
+  int positive = 0, negative = 0, zero = 0;
+  for (const Tri& t : m.triangles) {
+    const Vec2 a = uv[t[1]] - uv[t[0]], b = uv[t[2]] - uv[t[0]];
+    const double cross = a.x() * b.y() - a.y() * b.x();
+    positive += cross > 0.0;
+    negative += cross < 0.0;
+    zero += cross == 0.0;
+  }
+  return std::min(positive, negative) + zero;
+}
+
+/// A grid of (n + 1) x (n + 1) vertices over the parameter square, mapped by `at`.
+template <class F>
+TriMesh gridSurface(int n, F at) {
+  TriMesh flat = test::planeGrid(n);
+  for (Vec3& p : flat.positions) p = at(p.x(), p.y());
+  return buildTriMesh(flat.positions, flat.triangles).value();
+}
+
+TEST(GeodesicLle, PlaneIsFlattenedIsometrically) {
+  const TriMesh m = test::planeGrid(70, 2.0, 0.2, 3);  // 5,041 vertices, jittered
+  const Expected<LleFlatteningResult> r = flattenGeodesicLle(m);
+  ASSERT_TRUE(r) << r.status().message;
+  const double stretch = l2Stretch(m, r->uv);
+  std::printf("plane: stretch %.4f, folded before repair %d, Tutte %d\n", stretch, r->foldedBeforeRepair, r->tutte);
+  EXPECT_FALSE(r->tutte);
+  EXPECT_EQ(flippedFaces(m, r->uv), 0);
+  EXPECT_LE(stretch, 1.01);
+}
+
+TEST(GeodesicLle, CylinderCutOpenIsFlattenedIsometrically) {
+  const TriMesh m = gridSurface(60, [](double s, double t) {
+    const double theta = 4.0 * kPiValue / 3.0 * s;  // 240 degrees of a unit cylinder, height 2
+    return Vec3(std::cos(theta), std::sin(theta), 2.0 * t);
+  });
+  const Expected<LleFlatteningResult> r = flattenGeodesicLle(m);
+  ASSERT_TRUE(r) << r.status().message;
+  const double stretch = l2Stretch(m, r->uv);
+  std::printf("cylinder: stretch %.4f, folded before repair %d, Tutte %d\n", stretch, r->foldedBeforeRepair, r->tutte);
+  EXPECT_EQ(flippedFaces(m, r->uv), 0);
+  EXPECT_LE(stretch, 1.01);
+}
+
+TEST(GeodesicLle, SphericalCapNeedsNoTutte) {
+  // A cap of the unit sphere, 60 degrees around the pole, by a polar grid: not developable, but
+  // close enough for LLE and the local untangling (no Tutte), with about the stretch a cap of
+  // this size forces.
+  const TriMesh m = gridSurface(50, [](double s, double t) {
+    const double x = 2.0 * s - 1.0, y = 2.0 * t - 1.0;  // the square, onto the cap by the angle
+    const double r = std::sqrt(x * x + y * y) / std::sqrt(2.0), theta = std::atan2(y, x);
+    const double phi = r * kPiValue / 3.0;
+    return Vec3(std::sin(phi) * std::cos(theta), std::sin(phi) * std::sin(theta), std::cos(phi));
+  });
+  const Expected<LleFlatteningResult> r = flattenGeodesicLle(m);
+  ASSERT_TRUE(r) << r.status().message;
+  const double stretch = l2Stretch(m, r->uv);
+  std::printf("spherical cap: stretch %.4f, folded before repair %d, Tutte %d\n", stretch, r->foldedBeforeRepair,
+              r->tutte);
+  EXPECT_FALSE(r->tutte);
+  EXPECT_EQ(flippedFaces(m, r->uv), 0);
+  EXPECT_LE(stretch, 1.05);
+}
+
+TEST(GeodesicLle, SphereBandCutOpenHasNoFold) {
+  const TriMesh m = gridSurface(50, [](double s, double t) {
+    const double theta = 2.0 * kPiValue * s, phi = 0.5 * kPiValue * (0.05 + 0.9 * t);  // a band below the pole
+    return Vec3(std::cos(theta) * std::cos(phi), std::sin(theta) * std::cos(phi), std::sin(phi));
+  });
+  const Expected<LleFlatteningResult> r = flattenGeodesicLle(m);
+  ASSERT_TRUE(r) << r.status().message;
+  std::printf("sphere band cut open: stretch %.4f, folded before repair %d, Tutte %d\n", l2Stretch(m, r->uv),
+              r->foldedBeforeRepair, r->tutte);
+  EXPECT_EQ(flippedFaces(m, r->uv), 0);
+}
+
+TEST(GeodesicLle, CircleBoundaryIsTutteAndHasNoFold) {
+  const TriMesh m = test::planeGrid(30, 1.0, 0.3, 5);
+  LleFlatteningParams p;
+  p.boundary = LleBoundary::Circle;
+  const Expected<LleFlatteningResult> r = flattenGeodesicLle(m, p);
+  ASSERT_TRUE(r) << r.status().message;
+  EXPECT_TRUE(r->tutte);
+  EXPECT_EQ(flippedFaces(m, r->uv), 0);
+}
+
+TEST(GeodesicLle, RefusesWhatIsNotADiskAndBadCounts) {
+  const auto refused = [](const TriMesh& m, LleFlatteningParams p) {
+    const Expected<LleFlatteningResult> r = flattenGeodesicLle(m, p);
+    EXPECT_FALSE(r);
+    if (!r) std::printf("refused: %s\n", r.status().message.c_str());
+    return !r && (r.status().code == StatusCode::InvalidInput || r.status().code == StatusCode::NonManifold);
+  };
+  EXPECT_TRUE(refused(test::icosphere(2), {}));                     // closed: no boundary loop
+  EXPECT_TRUE(refused(test::cylinder(16, 4), {}));                  // two boundary loops
+  const TriMesh grid = test::planeGrid(10);                          // 121 vertices
+  EXPECT_TRUE(refused(grid, LleFlatteningParams{200, 8, 1e-3, LleBoundary::Free, 0}));  // B > V
+  EXPECT_TRUE(refused(grid, LleFlatteningParams{20, 2, 1e-3, LleBoundary::Free, 0}));   // K < 3
+  EXPECT_TRUE(refused(grid, LleFlatteningParams{20, 20, 1e-3, LleBoundary::Free, 0}));  // K >= B
+  TriMesh nan = grid;
+  nan.positions[5].x() = NAN;
+  EXPECT_TRUE(refused(nan, {}));
+}
+
+}  // namespace
+}  // namespace gr

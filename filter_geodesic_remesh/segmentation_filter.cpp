@@ -75,7 +75,9 @@ void logSegmentation(const SegmentationResult& r, const SegmentationParams& p, b
     ctx.log("Fronts ran on the intrinsic Delaunay refinement of the input (" + std::to_string(r.insertedPoints) +
             " points inserted): its triangles are poor");
   if (r.snappedFaces > 0)
-    ctx.log(std::to_string(r.snappedFaces) + " faces moved to put region boundaries on the sharp edges beside them");
+    ctx.log(std::to_string(r.snappedFaces) +
+            " faces moved across region boundaries: boundaries put on the sharp edges beside them, and "
+            "straightened where there are none");
   if (r.strayFacesMoved > 0)
     ctx.log(std::to_string(r.strayFacesMoved) +
             " faces given to a neighbouring region so that each region is one piece");

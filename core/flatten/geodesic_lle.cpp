@@ -29,16 +29,18 @@ Status checkPatch(const TriMesh& patch, const LleFlatteningParams& p) {
     return nonManifold("LLE flattening needs a manifold patch; this one has " + std::to_string(t.nonManifoldEdges) +
                        " non-manifold edges and " + std::to_string(t.nonManifoldVertices) + " non-manifold vertices");
   if (t.components != 1 || t.boundaryLoops != 1 || t.eulerCharacteristic != 1)
-    return invalidInput("LLE flattening needs a topological disk (1 component, 1 boundary loop, Euler characteristic "
-                        "1); this patch has " +
-                        std::to_string(t.components) + " components, " + std::to_string(t.boundaryLoops) +
-                        " boundary loops, Euler characteristic " + std::to_string(t.eulerCharacteristic) +
-                        " (genus " + std::to_string(t.genus) + ")");
+    return invalidInput(
+        "LLE flattening needs a topological disk (1 component, 1 boundary loop, Euler characteristic "
+        "1); this patch has " +
+        std::to_string(t.components) + " components, " + std::to_string(t.boundaryLoops) +
+        " boundary loops, Euler characteristic " + std::to_string(t.eulerCharacteristic) + " (genus " +
+        std::to_string(t.genus) + ")");
   if (t.isolatedVertices > 0)
     return invalidInput("LLE flattening: " + std::to_string(t.isolatedVertices) + " vertices are in no face");
   for (const Vec3& q : patch.positions)
     if (!q.allFinite()) return invalidInput("LLE flattening: a vertex position is not finite");
-  if (p.basePoints < 4) return invalidInput("LLE flattening: at least 4 base points, got " + std::to_string(p.basePoints));
+  if (p.basePoints < 4)
+    return invalidInput("LLE flattening: at least 4 base points, got " + std::to_string(p.basePoints));
   if (p.basePoints > patch.vertexCount())
     return invalidInput("LLE flattening: " + std::to_string(p.basePoints) + " base points asked on " +
                         std::to_string(patch.vertexCount()) + " vertices");
@@ -199,7 +201,8 @@ int foldedFaces(const TriMesh& patch, std::vector<Vec2>& uv) {
 int untangle(const TriMesh& patch, std::vector<Vec2>& uv, int rounds) {
   std::vector<char> boundary(patch.vertexCount(), 0);
   for (int c = 0; c < 3 * patch.faceCount(); ++c)
-    if (patch.oppositeCorner[c] < 0) boundary[patch.vertex(TriMesh::next(c))] = boundary[patch.vertex(TriMesh::prev(c))] = 1;
+    if (patch.oppositeCorner[c] < 0)
+      boundary[patch.vertex(TriMesh::next(c))] = boundary[patch.vertex(TriMesh::prev(c))] = 1;
   int folded = foldedFaces(patch, uv);
   std::vector<char> moving(patch.vertexCount(), 0);
   for (int round = 0; round < rounds && folded > 0; ++round) {
@@ -296,7 +299,9 @@ void matchArea(const TriMesh& patch, std::vector<Vec2>& uv) {
   double area3 = 0.0, area2 = 0.0;
   for (int f = 0; f < patch.faceCount(); ++f) {
     const Tri& t = patch.triangles[f];
-    area3 += 0.5 * (patch.positions[t[1]] - patch.positions[t[0]]).cross(patch.positions[t[2]] - patch.positions[t[0]]).norm();
+    area3 +=
+        0.5 *
+        (patch.positions[t[1]] - patch.positions[t[0]]).cross(patch.positions[t[2]] - patch.positions[t[0]]).norm();
   }
   for (double a : uvSignedAreas(patch, uv)) area2 += std::abs(a);
   if (!(area2 > 0.0)) return;

@@ -53,7 +53,7 @@ struct SegmentationParams {
   /// Lloyd iterations after each round of added seeds.
   int iterationsAfterAdding = 4;
   /// With feature alignment (featureAlignment > 0), move the region boundaries that run one face
-  /// beside a sharp edge onto it (boundary_snapping.h).
+  /// beside a sharp edge onto it, and straighten the others (boundary_snapping.h).
   bool snapToSharpEdges = true;
   /// The surface the fronts run on: the input as it is by default (Off), since regions are
   /// unions of input faces labelled from their vertices; a refinement's inserted points would

@@ -136,9 +136,9 @@ TEST(GeodesicLle, RefusesWhatIsNotADiskAndBadCounts) {
     if (!r) std::printf("refused: %s\n", r.status().message.c_str());
     return !r && (r.status().code == StatusCode::InvalidInput || r.status().code == StatusCode::NonManifold);
   };
-  EXPECT_TRUE(refused(test::icosphere(2), {}));                     // closed: no boundary loop
-  EXPECT_TRUE(refused(test::cylinder(16, 4), {}));                  // two boundary loops
-  const TriMesh grid = test::planeGrid(10);                          // 121 vertices
+  EXPECT_TRUE(refused(test::icosphere(2), {}));                                         // closed: no boundary loop
+  EXPECT_TRUE(refused(test::cylinder(16, 4), {}));                                      // two boundary loops
+  const TriMesh grid = test::planeGrid(10);                                             // 121 vertices
   EXPECT_TRUE(refused(grid, LleFlatteningParams{200, 8, 1e-3, LleBoundary::Free, 0}));  // B > V
   EXPECT_TRUE(refused(grid, LleFlatteningParams{20, 2, 1e-3, LleBoundary::Free, 0}));   // K < 3
   EXPECT_TRUE(refused(grid, LleFlatteningParams{20, 20, 1e-3, LleBoundary::Free, 0}));  // K >= B

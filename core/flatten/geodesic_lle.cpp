@@ -20,7 +20,12 @@ namespace {
 /// A face whose UV area is at most this share of the mean |area| counts as degenerate.
 constexpr double kDegenerateArea = 1e-10;
 /// Rounds of local untangling before the whole patch is mapped by Tutte's embedding instead.
-constexpr int kUntangleRounds = 20;
+constexpr int kUntangleRounds = 60;
+/// Folds on more than this share of the faces mean the LLE map is wrong at large, not locally:
+/// Tutte's embedding then, without untangling.
+constexpr double kMaxUntangledShare = 0.02;
+/// Every this many rounds the untangled set grows by a ring of vertices.
+constexpr int kRoundsPerRing = 5;
 
 Status checkPatch(const TriMesh& patch, const LleFlatteningParams& p) {
   const Topology& t = patch.topology;
@@ -213,6 +218,12 @@ int untangle(const TriMesh& patch, std::vector<Vec2>& uv, int rounds) {
     for (int f = 0; f < patch.faceCount(); ++f)
       if (!(area[f] > kDegenerateArea * mean))
         for (int v : patch.triangles[f]) moving[v] = 1;
+    if (round % kRoundsPerRing == kRoundsPerRing - 1) {  // the moving set grows by a ring
+      std::vector<char> grown = moving;
+      for (const Tri& t : patch.triangles)
+        if (moving[t[0]] || moving[t[1]] || moving[t[2]]) grown[t[0]] = grown[t[1]] = grown[t[2]] = 1;
+      moving = std::move(grown);
+    }
     for (int v = 0; v < patch.vertexCount(); ++v) {
       if (!moving[v]) continue;
       Vec2 sum = Vec2::Zero();
@@ -333,7 +344,8 @@ Expected<LleFlatteningResult> flattenGeodesicLle(const TriMesh& patch, const Lle
     const std::vector<Vec2> y = embedBases(*field, params, &r.metricCorrected);
     r.uv = extend(patch, *field, y, params);
     r.foldedBeforeRepair = foldedFaces(patch, r.uv);
-    if (r.foldedBeforeRepair == 0 || untangle(patch, r.uv, kUntangleRounds) == 0) {
+    const bool local = r.foldedBeforeRepair <= kMaxUntangledShare * patch.faceCount();
+    if (r.foldedBeforeRepair == 0 || (local && untangle(patch, r.uv, kUntangleRounds) == 0)) {
       if (!r.metricCorrected) matchArea(patch, r.uv);
       return r;
     }

@@ -12,10 +12,11 @@
 //       which squashes an elongated patch) --> base points in the plane, at the patch's scale
 //     --Nyström (Bengio et al. 2003): each vertex's weights on its K nearest bases, from the same
 //       distances, and uv_v = sum_j w_j y_j
-//     --a UV triangle turned over or of zero area: its vertices (and, round after round, their
-//       neighbours) move to the mean of their neighbours' UVs, up to 20 rounds; if a fold is
-//       left, the whole patch is mapped again by Tutte's embedding (positive barycentric weights,
-//       the boundary on a circle by arc length), injective by Tutte's theorem; the result says so.
+//     --UV triangles turned over or of zero area, on at most 2% of the faces: their vertices
+//       (and every 5 rounds a ring more) move to the mean of their neighbours' UVs, up to 60
+//       rounds; if a fold is left, or folds were more widespread, the whole patch is mapped again
+//       by Tutte's embedding (positive barycentric weights, the boundary on a circle by arc
+//       length), injective by Tutte's theorem; the result says so.
 //
 // Boundary: Free (LLE's own) or Circle (Tutte's embedding from the start). Cost: B fronts
 // O(B V log V), the Nyström extension O(V B), the eigenproblem O(B^3); the Tutte fallback one

@@ -88,23 +88,29 @@ TEST(GeodesicLle, CylinderCutOpenIsFlattenedIsometrically) {
 }
 
 TEST(GeodesicLle, SphericalCapNeedsNoTutte) {
-  // A cap of the unit sphere, 60 degrees around the pole, by a polar grid: not developable, but
-  // close enough for LLE and the local untangling (no Tutte), with about the stretch a cap of
-  // this size forces.
-  const TriMesh m = gridSurface(50, [](double s, double t) {
-    const double x = 2.0 * s - 1.0, y = 2.0 * t - 1.0;  // the square, onto the cap by the angle
-    const double r = std::sqrt(x * x + y * y) / std::sqrt(2.0), theta = std::atan2(y, x);
-    const double phi = r * kPiValue / 3.0;
-    return Vec3(std::sin(phi) * std::cos(theta), std::sin(phi) * std::sin(theta), std::cos(phi));
-  });
-  const Expected<LleFlatteningResult> r = flattenGeodesicLle(m);
-  ASSERT_TRUE(r) << r.status().message;
-  const double stretch = l2Stretch(m, r->uv);
-  std::printf("spherical cap: stretch %.4f, folded before repair %d, Tutte %d\n", stretch, r->foldedBeforeRepair,
-              r->tutte);
-  EXPECT_FALSE(r->tutte);
-  EXPECT_EQ(flippedFaces(m, r->uv), 0);
-  EXPECT_LE(stretch, 1.05);
+  // A cap of the unit sphere, 60 degrees around the pole, by a square grid pressed onto it (thin
+  // triangles at the square's corners): not developable, but close enough for LLE and the local
+  // untangling (no Tutte), with about the stretch a cap of this size forces. 2,601 and 10,000
+  // vertices (the second folds 202 faces after the Nyström step, bench_flatten).
+  for (const int n : {50, 99}) {
+    SCOPED_TRACE(n);
+    const TriMesh m = gridSurface(n, [](double s, double t) {
+      const double x = 2.0 * s - 1.0, y = 2.0 * t - 1.0;  // the square, onto the cap by the angle
+      const double r = std::sqrt(x * x + y * y) / std::sqrt(2.0), theta = std::atan2(y, x);
+      const double phi = r * kPiValue / 3.0;
+      return Vec3(std::sin(phi) * std::cos(theta), std::sin(phi) * std::sin(theta), std::cos(phi));
+    });
+    const Expected<LleFlatteningResult> r = flattenGeodesicLle(m);
+    ASSERT_TRUE(r) << r.status().message;
+    const double stretch = l2Stretch(m, r->uv);
+    std::printf("spherical cap, %d vertices: stretch %.4f, folded before repair %d, Tutte %d\n", m.vertexCount(),
+                stretch, r->foldedBeforeRepair, r->tutte);
+    EXPECT_FALSE(r->tutte);
+    EXPECT_EQ(flippedFaces(m, r->uv), 0);
+    // 2,601 vertices: 1.039. 10,000: 1.251, the untangling of 202 folds spreads over rings of
+    // vertices (not good enough for an atlas yet: held at the measured figure, issue 19 open).
+    EXPECT_LE(stretch, n == 50 ? 1.05 : 1.26);
+  }
 }
 
 TEST(GeodesicLle, SphereBandCutOpenHasNoFold) {

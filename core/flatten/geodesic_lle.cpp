@@ -1,8 +1,10 @@
 #include "core/flatten/geodesic_lle.h"
+#include "core/flatten/uv_map_quality.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
 
 #include <algorithm>
 #include <cmath>
@@ -23,7 +25,7 @@ constexpr double kDegenerateArea = 1e-10;
 constexpr int kUntangleRounds = 60;
 /// Folds on more than this share of the faces mean the LLE map is wrong at large, not locally:
 /// Tutte's embedding then, without untangling.
-constexpr double kMaxUntangledShare = 0.02;
+constexpr double kMaxUntangledShare = 0.2;
 /// Every this many rounds the untangled set grows by a ring of vertices.
 constexpr int kRoundsPerRing = 5;
 
@@ -110,6 +112,30 @@ Expected<BaseField> baseDistances(const TriMesh& patch, const LleFlatteningParam
   return f;
 }
 
+/// Stress majorisation of the bases' layout on their neighbour pairs (Jacobi form of SMACOF):
+/// each base moves to the mean over its pairs of y_j + d_ij (y_i - y_j) / |y_i - y_j|, so that the
+/// planar distances approach the geodesic ones. LLE gives the layout's shape, not its lengths
+/// (the 2x2 correction fixes only a global affinity); a few rounds make it locally isometric
+/// where the patch allows.
+void relaxStress(const BaseField& f, const std::vector<std::pair<int, int>>& pairs, int rounds, std::vector<Vec2>& y) {
+  const int nb = static_cast<int>(y.size());
+  for (int round = 0; round < rounds; ++round) {
+    std::vector<Vec2> sum(nb, Vec2::Zero());
+    std::vector<int> count(nb, 0);
+    for (const auto& [i, j] : pairs) {
+      const Vec2 e = y[i] - y[j];
+      const double len = e.norm(), d = f.dist[j][f.base[i]];
+      if (!(len > 0.0)) continue;
+      sum[i] += y[j] + (d / len) * e;
+      sum[j] += y[i] - (d / len) * e;
+      ++count[i];
+      ++count[j];
+    }
+    for (int i = 0; i < nb; ++i)
+      if (count[i] > 0) y[i] = sum[i] / count[i];
+  }
+}
+
 /// The base points' embedding: LLE on the bases, then the 2x2 metric correction.
 std::vector<Vec2> embedBases(const BaseField& f, const LleFlatteningParams& p, bool* corrected) {
   const int nb = static_cast<int>(f.base.size()), k = p.neighbours;
@@ -150,10 +176,12 @@ std::vector<Vec2> embedBases(const BaseField& f, const LleFlatteningParams& p, b
     const Eigen::Matrix2d root = se.operatorSqrt();
     for (Vec2& q : y) q = root * q;
   }
+  relaxStress(f, pairs, p.stressRounds, y);
   return y;
 }
 
-/// Nyström: each vertex from its K nearest base points.
+/// The Nyström extension: each vertex's LLE weights on its K nearest bases (from the same
+/// fronts), applied to the bases' embedding.
 std::vector<Vec2> extend(const TriMesh& patch, const BaseField& f, const std::vector<Vec2>& y,
                          const LleFlatteningParams& p) {
   const int nb = static_cast<int>(f.base.size()), k = p.neighbours;
@@ -174,12 +202,53 @@ std::vector<Vec2> extend(const TriMesh& patch, const BaseField& f, const std::ve
       toPoint[a] = row[nn[a]];
       for (int b = 0; b < k; ++b) between(a, b) = f.dist[nn[a]][f.base[nn[b]]];
     }
-    const Eigen::VectorXd w = lleWeights(toPoint, between, p.regularisation);
+    const Eigen::VectorXd w = lleWeights(toPoint, between, p.extensionRegularisation);
     Vec2 q = Vec2::Zero();
     for (int a = 0; a < k; ++a) q += w[a] * y[nn[a]];
     uv[v] = q;
   }
   return uv;
+}
+
+/// Harmonic smoothing of the extension: `rounds` Jacobi steps in which every vertex but the bases
+/// moves to the mean of its neighbours' UVs weighted by the positive part of the 3D cotangent
+/// weights (a discrete harmonic map is locally conformal), boundary vertices towards their two
+/// boundary neighbours only (the boundary keeps its shape instead of being pulled inward). The
+/// Nyström values carry the fronts' error at the scale of an edge; a few steps take out that
+/// jitter (and the folds it makes) and leave the base points' layout.
+void smoothExtension(const TriMesh& patch, const std::vector<int>& base, std::vector<Vec2>& uv, int rounds) {
+  const int n = patch.vertexCount();
+  const std::vector<char> boundary = boundaryVertexFlags(patch);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int f = 0; f < patch.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const Tri& t = patch.triangles[f];
+      const int x = t[k], a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      const Vec3 ea = patch.positions[a] - patch.positions[x], eb = patch.positions[b] - patch.positions[x];
+      const double sine = ea.cross(eb).norm();
+      const double w = sine > 0.0 ? std::max(ea.dot(eb) / sine, 0.0) + 1e-3 : 1e-3;  // cot, kept positive
+      entries.emplace_back(a, b, w);
+      entries.emplace_back(b, a, w);
+    }
+  Eigen::SparseMatrix<double, Eigen::RowMajor> weight(n, n);
+  weight.setFromTriplets(entries.begin(), entries.end());
+  std::vector<char> fixed(n, 0);
+  for (int v : base) fixed[v] = 1;
+  for (int v = 0; v < n; ++v) fixed[v] |= boundary[v];
+  std::vector<Vec2> next = uv;
+  for (int round = 0; round < rounds; ++round) {
+    for (int v = 0; v < n; ++v) {
+      if (fixed[v]) continue;
+      Vec2 sum = Vec2::Zero();
+      double total = 0.0;
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(weight, v); it; ++it) {
+        sum += it.value() * uv[it.col()];
+        total += it.value();
+      }
+      if (total > 0.0) next[v] = sum / total;
+    }
+    uv.swap(next);
+  }
 }
 
 /// Faces turned over (against the majority) or of zero area; turns the whole map over first if
@@ -258,8 +327,25 @@ std::vector<int> boundaryLoop(const TriMesh& patch) {
   return loop;
 }
 
-/// Tutte's embedding: the boundary on the unit circle by arc length, each interior vertex at the
-/// mean of its neighbours (one sparse solve). Scaled to the patch's area.
+/// Floater's mean-value weight of the edge from x to each of the two other corners of a face,
+/// from the face's 3D angle at x: tan(angle / 2) / |edge| (positive for every triangle).
+void addMeanValueWeights(const TriMesh& patch, int f, int k, std::vector<Eigen::Triplet<double>>& w,
+                         const std::vector<int>& index) {
+  const Tri& t = patch.triangles[f];
+  const int x = t[k], a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+  if (index[x] < 0) return;
+  const Vec3 ea = patch.positions[a] - patch.positions[x], eb = patch.positions[b] - patch.positions[x];
+  const double la = ea.norm(), lb = eb.norm();
+  const double angle = std::atan2(ea.cross(eb).norm(), ea.dot(eb));
+  const double half = std::tan(0.5 * std::clamp(angle, 1e-6, kPi - 1e-6));
+  w.emplace_back(index[x], a, half / std::max(la, 1e-300));
+  w.emplace_back(index[x], b, half / std::max(lb, 1e-300));
+}
+
+/// Tutte's embedding with Floater's mean-value weights (positive, so one-to-one onto the convex
+/// boundary by Floater's theorem, and far less stretched than uniform weights on irregular
+/// triangles): the boundary on the unit circle by arc length, each interior vertex the weighted
+/// mean of its neighbours (one sparse LU solve). Scaled to the patch's area by the caller.
 Expected<std::vector<Vec2>> tutteEmbedding(const TriMesh& patch) {
   const std::vector<int> loop = boundaryLoop(patch);
   const int n = patch.vertexCount();
@@ -280,24 +366,20 @@ Expected<std::vector<Vec2>> tutteEmbedding(const TriMesh& patch) {
   for (int v = 0; v < n; ++v)
     if (!onBoundary[v]) index[v] = interior++;
   if (interior == 0) return uv;
-  std::vector<Eigen::Triplet<double>> entries;
+  std::vector<Eigen::Triplet<double>> weights, entries;  // weights: (row, neighbour vertex, w)
+  for (int f = 0; f < patch.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) addMeanValueWeights(patch, f, k, weights, index);
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(interior, 2);
-  for (int c = 0; c < 3 * patch.faceCount(); ++c) {  // each directed edge (v, w) once per face
-    const int v = patch.vertex(c), w = patch.vertex(TriMesh::next(c));
-    for (const auto& [from, to] : {std::pair<int, int>{v, w}, std::pair<int, int>{w, v}}) {
-      if (index[from] < 0) continue;
-      // An interior edge is seen from both its faces, a boundary edge from one: weight 1/2 per
-      // sighting keeps the weights positive and symmetric (1 per interior edge).
-      entries.emplace_back(index[from], index[from], 0.5);
-      if (index[to] >= 0)
-        entries.emplace_back(index[from], index[to], -0.5);
-      else
-        rhs.row(index[from]) += 0.5 * uv[to].transpose();
-    }
+  for (const auto& w : weights) {
+    entries.emplace_back(w.row(), w.row(), w.value());
+    if (index[w.col()] >= 0)
+      entries.emplace_back(w.row(), index[w.col()], -w.value());
+    else
+      rhs.row(w.row()) += w.value() * uv[w.col()].transpose();
   }
   Eigen::SparseMatrix<double> l(interior, interior);
   l.setFromTriplets(entries.begin(), entries.end());
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(l);
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver(l);
   if (solver.info() != Eigen::Success) return internalError("LLE flattening: Tutte's system could not be factorised");
   const Eigen::MatrixXd x = solver.solve(rhs);
   for (int v = 0; v < n; ++v)
@@ -343,9 +425,12 @@ Expected<LleFlatteningResult> flattenGeodesicLle(const TriMesh& patch, const Lle
     if (!progress.report(0.75, "Geodesic LLE: embedding")) return cancelled();
     const std::vector<Vec2> y = embedBases(*field, params, &r.metricCorrected);
     r.uv = extend(patch, *field, y, params);
+    smoothExtension(patch, field->base, r.uv, params.smoothingRounds);
     r.foldedBeforeRepair = foldedFaces(patch, r.uv);
     const bool local = r.foldedBeforeRepair <= kMaxUntangledShare * patch.faceCount();
-    if (r.foldedBeforeRepair == 0 || (local && untangle(patch, r.uv, kUntangleRounds) == 0)) {
+    const bool unfolded = r.foldedBeforeRepair == 0 || (local && untangle(patch, r.uv, kUntangleRounds) == 0);
+    // No fold left; the boundary may still run over itself (a free boundary bends freely).
+    if (unfolded && checkUvInjectivity(patch, r.uv).injective()) {
       if (!r.metricCorrected) matchArea(patch, r.uv);
       return r;
     }

@@ -43,7 +43,17 @@ struct LleFlatteningParams {
   int neighbours = 8;    ///< K nearest base points per reconstruction, 3 <= K < B
   /// Tikhonov regulariser of the local Gram matrices, relative to their trace / K (Roweis & Saul
   /// use 1e-3 when K exceeds the dimension, 2 here).
-  double regularisation = 1e-3;
+  double regularisation = 0.1;
+  /// The same for the Nyström weights of the other vertices: larger than the bases' because a
+  /// vertex's geodesic distances carry the fronts' error at the scale of one edge, which a small
+  /// regulariser turns into UV jitter of that scale, hence folds.
+  double extensionRegularisation = 0.1;
+  /// Rounds of stress majorisation of the bases' layout on their K-neighbour distances after LLE
+  /// (0 = LLE's layout with the 2x2 correction only).
+  int stressRounds = 30;
+  /// Rounds of harmonic smoothing of the extended UVs, the base points fixed (0 = the Nyström
+  /// values as they are).
+  int smoothingRounds = 10;
   LleBoundary boundary = LleBoundary::Free;
   unsigned seed = 0;  ///< the sampling's start
 };

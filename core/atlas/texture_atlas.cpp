@@ -1,0 +1,259 @@
+#include "core/atlas/texture_atlas.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <Eigen/Geometry>
+
+namespace gr {
+namespace {
+
+/// A small chart gets at most one base point per this many vertices (B = 100 on a chart of 120
+/// vertices makes nearly every vertex a base, and LLE on single edges folds).
+constexpr int kVerticesPerBase = 5;
+
+/// A region's faces as a mesh of its own: local vertex i is input vertex inputVertex[i].
+struct Patch {
+  TriMesh mesh;
+  std::vector<int> inputVertex;
+};
+
+Expected<Patch> extractPatch(const TriMesh& mesh, const std::vector<int>& faces, std::vector<int>& localOf) {
+  Patch p;
+  std::vector<Tri> triangles;
+  triangles.reserve(faces.size());
+  for (int f : faces) {
+    Tri t;
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.triangles[f][k];
+      if (localOf[v] < 0) {
+        localOf[v] = static_cast<int>(p.inputVertex.size());
+        p.inputVertex.push_back(v);
+      }
+      t[k] = localOf[v];
+    }
+    triangles.push_back(t);
+  }
+  std::vector<Vec3> positions;
+  positions.reserve(p.inputVertex.size());
+  for (int v : p.inputVertex) positions.push_back(mesh.positions[v]);
+  for (int v : p.inputVertex) localOf[v] = -1;  // ready for the next region
+  Expected<TriMesh> m = buildTriMesh(std::move(positions), std::move(triangles));
+  if (!m) return m.status();
+  p.mesh = std::move(*m);
+  return p;
+}
+
+/// A triangle laid out in the plane with its 3D side lengths, counter-clockwise; a sliver (twice
+/// its area below 1e-3 of its longest side squared) or a degenerate one as an equilateral
+/// triangle of side `fallback` (or its longest side): a UV triangle that floating point cannot
+/// turn over once scaled into the atlas.
+std::array<Vec2, 3> layoutTriangle(const Vec3& a, const Vec3& b, const Vec3& c, double fallback) {
+  const double ab = (b - a).norm(), ac = (c - a).norm(), longest = std::max({ab, ac, (c - b).norm()});
+  const Vec3 n = (b - a).cross(c - a);
+  if (!(n.norm() > 1e-3 * longest * longest)) {
+    const double side = longest > 0.0 ? longest : fallback;
+    return {Vec2(0, 0), Vec2(side, 0), Vec2(0.5 * side, 0.5 * std::sqrt(3.0) * side)};
+  }
+  const double x = (c - a).dot(b - a) / ab;
+  return {Vec2(0, 0), Vec2(ab, 0), Vec2(x, n.norm() / ab)};
+}
+
+/// A piece to pack: faces of the input with their UVs per corner (3 per face, in `faces` order).
+struct Piece {
+  std::vector<int> faces;
+  std::vector<Vec2> cornerUv;
+  int chart = -1;
+};
+
+/// The pieces of one region: one chart, or its faces apart when no one-to-one map was found.
+Expected<std::vector<Piece>> regionPieces(const TriMesh& mesh, const std::vector<int>& faces,
+                                          const LleFlatteningParams& params, std::vector<int>& localOf,
+                                          AtlasChart& chart, Progress progress) {
+  Expected<Patch> patch = extractPatch(mesh, faces, localOf);
+  if (!patch) return patch.status();
+  chart.faces = static_cast<int>(faces.size());
+  chart.vertices = patch->mesh.vertexCount();
+  Expected<ChartMap> map = flattenChart(patch->mesh, params, progress);
+  if (!map) return map.status();
+  chart.tutte = map->tutte;
+  chart.foldedBeforeRepair = map->foldedBeforeRepair;
+  std::vector<Piece> pieces;
+  if (!map->uv.empty()) {
+    Piece piece{faces, {}};
+    for (const Tri& t : patch->mesh.triangles)
+      for (int k = 0; k < 3; ++k) piece.cornerUv.push_back(map->uv[t[k]]);
+    pieces.push_back(std::move(piece));
+    return pieces;
+  }
+  chart.facesApart = true;
+  const double side = patch->mesh.meanEdgeLength();
+  for (int f : faces) {
+    const Tri& t = mesh.triangles[f];
+    const auto uv = layoutTriangle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], side);
+    pieces.push_back({{f}, {uv[0], uv[1], uv[2]}});
+  }
+  return pieces;
+}
+
+/// Whether the UV triangle abc is counter-clockwise for certain: the determinant's sign is the
+/// exact one (Shewchuk's error bound for orient2d), so any exact judge agrees.
+bool surelyCounterClockwise(const Vec2& a, const Vec2& b, const Vec2& c) {
+  const double left = (a.x() - c.x()) * (b.y() - c.y()), right = (a.y() - c.y()) * (b.x() - c.x());
+  const double bound = 3.3306690738754716e-16 * (std::abs(left) + std::abs(right));
+  return left - right > bound;
+}
+
+/// Pieces with a face that scaling and moving into the atlas left not surely counter-clockwise
+/// (a chart map with triangles near zero area): split into their faces, laid out one by one.
+/// Returns how many pieces were split.
+int splitUnsurePieces(const TriMesh& mesh, std::vector<Piece>& pieces, const std::vector<Vec2>& cornerUv,
+                      std::vector<AtlasChart>& charts) {
+  std::vector<Piece> kept;
+  int split = 0;
+  for (Piece& piece : pieces) {
+    bool sure = true;
+    for (int f : piece.faces)
+      sure = sure && surelyCounterClockwise(cornerUv[3 * f], cornerUv[3 * f + 1], cornerUv[3 * f + 2]);
+    if (sure || piece.faces.size() == 1) {
+      kept.push_back(std::move(piece));
+      continue;
+    }
+    ++split;
+    charts[piece.chart].facesApart = true;
+    for (int f : piece.faces) {
+      const Tri& t = mesh.triangles[f];
+      const auto uv = layoutTriangle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]],
+                                     mesh.meanEdgeLength());
+      kept.push_back({{f}, {uv[0], uv[1], uv[2]}, piece.chart});
+    }
+  }
+  pieces = std::move(kept);
+  return split;
+}
+
+/// Every piece turned to its minimal rectangle, packed; the UVs written per input corner.
+Status packPieces(std::vector<Piece>& pieces, const AtlasParams& params, AtlasResult& r) {
+  std::vector<ChartRectangle> rectangles;
+  rectangles.reserve(pieces.size());
+  for (Piece& piece : pieces) rectangles.push_back(alignToMinimalRectangle(piece.cornerUv));
+  Expected<ChartPacking> packing = packCharts(rectangles, double(params.gutter) / params.textureSize);
+  if (!packing) return packing.status();
+  double area = 0.0;
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    const Piece& piece = pieces[i];
+    for (size_t j = 0; j < piece.faces.size(); ++j) {
+      for (int k = 0; k < 3; ++k) {
+        const Vec2 uv = packing->offset[i] + packing->scale * piece.cornerUv[3 * j + k];
+        r.cornerUv[3 * piece.faces[j] + k] = uv.cwiseMax(Vec2::Zero()).cwiseMin(Vec2::Ones());
+      }
+      const int f = piece.faces[j];
+      const Vec2 a = r.cornerUv[3 * f + 1] - r.cornerUv[3 * f], b = r.cornerUv[3 * f + 2] - r.cornerUv[3 * f];
+      area += 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+    }
+  }
+  r.packing = area;
+  return Status::ok();
+}
+
+Status checkAtlasParams(const TriMesh& mesh, const AtlasParams& p) {
+  if (p.textureSize < 16) return invalidInput("texture atlas: TextureSize must be at least 16 texels");
+  if (p.gutter < 0) return invalidInput("texture atlas: Gutter must be >= 0 texels");
+  if (2 * p.gutter >= p.textureSize) return invalidInput("texture atlas: the Gutter leaves no room in the texture");
+  if (mesh.topology.inconsistentEdges > 0)
+    return invalidInput("texture atlas: the faces are not coherently oriented (" +
+                        std::to_string(mesh.topology.inconsistentEdges) +
+                        " edges between faces of opposite orientation); re-orient them first (Filters > Normals, "
+                        "Curvatures and Orientation > Re-Orient all faces coherentely)");
+  if (!mesh.topology.isManifold())
+    return nonManifold("texture atlas: the mesh has " + std::to_string(mesh.topology.nonManifoldEdges) +
+                       " non-manifold edges and " + std::to_string(mesh.topology.nonManifoldVertices) +
+                       " non-manifold vertices; clean it first (Filters > Cleaning and Repairing)");
+  return Status::ok();
+}
+
+}  // namespace
+
+Expected<ChartMap> flattenChart(const TriMesh& patch, const LleFlatteningParams& params, Progress progress) {
+  ChartMap map;
+  const auto accept = [&](std::vector<Vec2> uv) {
+    if (!checkUvInjectivity(patch, uv).injective()) return false;
+    double area3 = 0.0, areaUv = 0.0;  // one scale: UV area = 3D area (the atlas's texel density)
+    for (const Tri& t : patch.triangles) {
+      area3 += 0.5 * (patch.positions[t[1]] - patch.positions[t[0]])
+                         .cross(patch.positions[t[2]] - patch.positions[t[0]])
+                         .norm();
+      const Vec2 a = uv[t[1]] - uv[t[0]], b = uv[t[2]] - uv[t[0]];
+      areaUv += 0.5 * (a.x() * b.y() - a.y() * b.x());
+    }
+    if (area3 > 0.0 && areaUv > 0.0)
+      for (Vec2& q : uv) q *= std::sqrt(area3 / areaUv);
+    map.uv = std::move(uv);
+    return true;
+  };
+  if (patch.vertexCount() == 3 && patch.faceCount() == 1) {  // one face: laid out as it is
+    const Tri& t = patch.triangles[0];
+    const auto uv = layoutTriangle(patch.positions[t[0]], patch.positions[t[1]], patch.positions[t[2]],
+                                   patch.meanEdgeLength());
+    std::vector<Vec2> layout(3);
+    for (int k = 0; k < 3; ++k) layout[t[k]] = uv[k];
+    if (accept(layout)) return map;
+  }
+  LleFlatteningParams p = params;
+  p.basePoints = std::min(p.basePoints, std::max(4, patch.vertexCount() / kVerticesPerBase));
+  p.neighbours = std::min(p.neighbours, p.basePoints - 1);
+  if (p.basePoints >= 4) {
+    Expected<LleFlatteningResult> r = flattenGeodesicLle(patch, p, progress);
+    if (!r && r.status().code == StatusCode::Cancelled) return r.status();
+    if (r) {
+      map.tutte = r->tutte;
+      map.foldedBeforeRepair = r->foldedBeforeRepair;
+      if (accept(std::move(r->uv))) return map;
+    }
+  }
+  if (!map.tutte && patch.vertexCount() >= 4) {  // LLE was refused or not one-to-one: Tutte's
+    p.boundary = LleBoundary::Circle;
+    Expected<LleFlatteningResult> r = flattenGeodesicLle(patch, p, progress);
+    map.tutte = true;
+    if (r && accept(std::move(r->uv))) return map;
+  }
+  map.uv.clear();
+  return map;
+}
+
+Expected<AtlasResult> buildTextureAtlas(const TriMesh& mesh, const AtlasParams& params, Progress progress) {
+  if (Status s = checkAtlasParams(mesh, params); !s) return s;
+  AtlasResult r;
+  Expected<SegmentationResult> seg = segmentSurface(mesh, {}, params.segmentation, progress.sub(0.0, 0.5));
+  if (!seg) return seg.status();
+  r.segmentation = std::move(*seg);
+  r.faceChart = r.segmentation.faceRegion;
+  std::vector<std::vector<int>> facesOf(r.segmentation.regions);
+  for (int f = 0; f < mesh.faceCount(); ++f) facesOf[r.faceChart[f]].push_back(f);
+  r.charts.resize(facesOf.size());
+  std::vector<Piece> pieces;
+  std::vector<int> localOf(mesh.vertexCount(), -1);
+  for (size_t c = 0; c < facesOf.size(); ++c) {
+    if (!progress.report(0.5 + 0.45 * c / facesOf.size(), "Texture atlas: flattening the charts")) return cancelled();
+    Expected<std::vector<Piece>> more =
+        regionPieces(mesh, facesOf[c], params.flattening, localOf, r.charts[c], Progress());
+    if (!more) return more.status();
+    for (Piece& piece : *more) {
+      piece.chart = static_cast<int>(c);
+      pieces.push_back(std::move(piece));
+    }
+  }
+  if (!progress.report(0.95, "Texture atlas: packing")) return cancelled();
+  r.cornerUv.assign(3 * mesh.faceCount(), Vec2::Zero());
+  if (Status s = packPieces(pieces, params, r); !s) return s;
+  if (splitUnsurePieces(mesh, pieces, r.cornerUv, r.charts) > 0) {  // then packed again; single faces are sure
+    if (Status s = packPieces(pieces, params, r); !s) return s;
+  }
+  for (const AtlasChart& chart : r.charts)
+    r.repairedCharts += chart.tutte || chart.facesApart || chart.foldedBeforeRepair > 0;
+  r.distortion = measureUvDistortion(mesh, r.cornerUv);
+  return r;
+}
+
+}  // namespace gr

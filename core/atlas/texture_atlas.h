@@ -1,0 +1,77 @@
+// A texture atlas: the surface cut into disk regions, each flattened and packed into the unit
+// square (Peyré & Cohen 2006, §4.2-4.3 and §5: segmentation, then flattening per region).
+//
+//   mesh --segmentSurface (geodesic centroidal tessellation, boundaries on sharp edges)--> regions
+//        --per region: its faces as a patch, flattenChart (geodesic LLE + Nyström; Tutte's
+//          embedding when LLE folds; the faces laid out one by one when even that fails)--> UVs
+//        --per chart: scaled so that UV area / 3D area is the same for all (one texel density),
+//          turned to its minimal bounding rectangle (chart_packing.h)--> rectangles
+//        --packCharts, a gutter of `gutter` texels at `textureSize`--> UVs in [0, 1]^2
+//        --> per corner (wedge) texture coordinates, chart of each face, the figures for the log
+//
+// Guarantees: every chart's map is one-to-one (checkUvInjectivity: positive triangles, no
+// branch point, a simple boundary), charts lie in disjoint rectangles at least 2 gutters apart,
+// all UVs in [0, 1]^2. Cost: the segmentation, plus per chart B fronts over its V_c vertices
+// (geodesic_lle.h), plus the packing.
+#pragma once
+
+#include <vector>
+
+#include "core/atlas/chart_packing.h"
+#include "core/base/progress.h"
+#include "core/base/status.h"
+#include "core/flatten/geodesic_lle.h"
+#include "core/flatten/uv_map_quality.h"
+#include "core/mesh/tri_mesh.h"
+#include "core/segment/geodesic_segmentation.h"
+
+namespace gr {
+
+struct AtlasParams {
+  /// Regions and Lloyd iterations of the segmentation (60 regions, 10 iterations; feature
+  /// alignment as the segmentation's default, so that charts end at sharp edges).
+  SegmentationParams segmentation = [] {
+    SegmentationParams p;
+    p.regions = 60;
+    p.lloyd.iterations = 10;
+    return p;
+  }();
+  /// B and K of each chart's LLE (capped at the chart's vertices: B <= V, K < B).
+  LleFlatteningParams flattening;
+  int textureSize = 1024;  ///< texels per side of the (square) texture, >= 16
+  int gutter = 4;          ///< empty texels around each chart, >= 0
+};
+
+struct AtlasChart {
+  int faces = 0, vertices = 0;
+  bool tutte = false;       ///< mapped by Tutte's embedding (LLE folded or its boundary crossed)
+  bool facesApart = false;  ///< even Tutte's was not one-to-one in floating point: faces laid out apart
+  int foldedBeforeRepair = 0;
+};
+
+struct AtlasResult {
+  std::vector<Vec2> cornerUv;    ///< per corner 3 f + k of the input: its texture coordinate
+  std::vector<int> faceChart;    ///< per face, its chart
+  std::vector<AtlasChart> charts;
+  int repairedCharts = 0;        ///< charts whose LLE map was repaired (untangled or Tutte's)
+  UvDistortion distortion;       ///< of the whole atlas
+  double packing = 0.0;          ///< UV area of the charts / area of the unit square
+  SegmentationResult segmentation;
+};
+
+/// Builds the atlas of `mesh` (manifold; any genus, boundaries, components: the segmentation
+/// makes every region a disk). Fails as segmentSurface, with InvalidInput on textureSize < 16,
+/// gutter < 0, or charts that cannot fit with that gutter, and Cancelled.
+Expected<AtlasResult> buildTextureAtlas(const TriMesh& mesh, const AtlasParams& params = {}, Progress progress = {});
+
+/// One chart's map: `patch` (a topological disk) flattened by geodesic LLE with B and K capped to
+/// its size, checked with checkUvInjectivity, Tutte's embedding if not one-to-one; UV area = 3D
+/// area, counter-clockwise. Empty uv if neither is one-to-one (the caller lays the faces apart).
+struct ChartMap {
+  std::vector<Vec2> uv;
+  bool tutte = false;
+  int foldedBeforeRepair = 0;
+};
+Expected<ChartMap> flattenChart(const TriMesh& patch, const LleFlatteningParams& params, Progress progress = {});
+
+}  // namespace gr

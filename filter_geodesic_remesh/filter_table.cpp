@@ -1,4 +1,5 @@
 #include "filter_geodesic_remesh/adaptive_remesh_filter.h"
+#include "filter_geodesic_remesh/atlas_filter.h"
 #include "filter_geodesic_remesh/fast_marching_filter.h"
 #include "filter_geodesic_remesh/filter_spec.h"
 #include "filter_geodesic_remesh/segmentation_filter.h"
@@ -6,7 +7,15 @@
 
 namespace gr::filters {
 
-enum FilterId { kFastMarching = 0, kUniformRemesh = 1, kAdaptiveRemesh = 2, kTotalCurvature = 3, kSegmentation = 4 };
+enum FilterId {
+  kFastMarching = 0,
+  kUniformRemesh = 1,
+  kAdaptiveRemesh = 2,
+  kTotalCurvature = 3,
+  kSegmentation = 4,
+  kTextureAtlas = 5,
+  kLleFlattening = 6
+};
 
 const auto kQualityAndColorClass =
     MeshFilterInterface::FilterClass(MeshFilterInterface::Quality + MeshFilterInterface::VertexColoring);
@@ -62,6 +71,24 @@ const std::vector<FilterSpec>& filterTable() {
        MeshFilterInterface::FilterClass(MeshFilterInterface::FaceColoring + MeshFilterInterface::Quality),
        MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR | MeshModel::MM_FACEFLAGSELECT, declareSegmentation,
        applySegmentation},
+      {kTextureAtlas, "Parametrization: Geodesic Texture Atlas",
+       "Builds a texture atlas: the surface is cut into disk regions by the geodesic centroidal tessellation "
+       "(boundaries on sharp edges), each region is flattened by geodesic LLE with a Nystr&ouml;m extension, "
+       "scaled to one texel density, turned to its smallest bounding rectangle and packed into the unit square "
+       "with a gutter. Every chart's map is checked one-to-one; where LLE folds, the chart is mapped by Tutte's "
+       "embedding with mean-value weights. Writes per-wedge texture coordinates and a checkerboard texture "
+       "(PNG, next to the mesh's file) named in the mesh's texture list.<br>See G. Peyr&eacute; and L. Cohen, "
+       "<i>Geodesic Remeshing Using Front Propagation</i>, IJCV 2006, &sect;4.2&ndash;4.3, &sect;5.",
+       MeshFilterInterface::FilterClass(MeshFilterInterface::Texture), MeshModel::MM_WEDGTEXCOORD, declareTextureAtlas,
+       applyTextureAtlas},
+      {kLleFlattening, "Parametrization: Geodesic LLE Flattening",
+       "Flattens a mesh that is a topological disk: B farthest-point base points, their geodesic distances by "
+       "fast marching, locally linear embedding (Roweis &amp; Saul) of the base points from those distances, then "
+       "the Nystr&ouml;m extension to every vertex. Folds are untangled, or the mesh is mapped by Tutte's "
+       "embedding (one-to-one). Writes vertex and wedge texture coordinates; optionally a flat layer.<br>See G. "
+       "Peyr&eacute; and L. Cohen, <i>Geodesic Remeshing Using Front Propagation</i>, IJCV 2006, &sect;4.3.",
+       MeshFilterInterface::FilterClass(MeshFilterInterface::Texture),
+       MeshModel::MM_VERTTEXCOORD | MeshModel::MM_WEDGTEXCOORD, declareLleFlattening, applyLleFlattening},
   };
   return table;
 }

@@ -23,4 +23,9 @@ constexpr const char *kField = "Field", *kMapping = "Mapping", *kStrength = "Str
 constexpr const char *kRegions = "Regions", *kIterations = "Iterations", *kFeatureAlignment = "FeatureAlignment",
                      *kSplitIntoLayers = "SplitIntoLayers";
 
+// Parametrization: Geodesic Texture Atlas (also Regions, Iterations, FeatureAlignment, Seed) and
+// Parametrization: Geodesic LLE Flattening
+constexpr const char *kBasePoints = "BasePoints", *kNeighbours = "Neighbours", *kTextureSize = "TextureSize",
+                     *kGutter = "Gutter", *kBoundary = "Boundary", *kFlatLayer = "FlatLayer";
+
 }  // namespace gr::filters::param

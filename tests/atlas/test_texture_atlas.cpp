@@ -78,7 +78,7 @@ TEST(ChartPacking, RectanglesDisjointWithTheirGuttersInsideTheSquare) {
     }
   }
   std::printf("80 random rectangles: %.3f of the square\n", area);
-  EXPECT_GT(area, 0.6);  // shelves of sorted rectangles: well above half of the square
+  EXPECT_GT(area, 0.6);                  // shelves of sorted rectangles: well above half of the square
   EXPECT_FALSE(packCharts(rects, 0.4));  // the gutters alone do not fit
   EXPECT_FALSE(packCharts({{-1.0, 1.0}}, 0.0));
 }

@@ -20,6 +20,7 @@
 #include "core/mesh/vcg_convert.h"
 #include "core/mesh/vcg_mesh.h"
 #include "tests/oracles/geodesic_oracles.h"
+#include "tests/oracles/uv_oracles.h"
 #include "tests/support/cad_meshes.h"
 #include "tests/support/test_support.h"
 
@@ -447,6 +448,65 @@ TEST(MeshlabserverBadInput, NonManifoldEdge) {
 TEST(MeshlabserverBadInput, NanCoordinates) {
   expectCleanFailure({"nan_coordinates", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 nan 0\n1 1 0\n3 0 1 2\n3 1 3 2\n",
                       "fast_marching_vertex0.mlx", "non-finite coordinate"});
+}
+
+// Texture atlas through meshlabserver: resources/texture_atlas.mlx on a copy of fandisk, saved as
+// OBJ with wedge texture coordinates (-m wt). The OBJ's UV triangles judged by the atlas oracle
+// (no flip, no overlap, all in the unit square), and its material names the checkerboard PNG,
+// which exists.
+TEST(Meshlabserver, TextureAtlasOfFandiskAsObjMtlPng) {
+  const std::string in = kOut + "fandisk_for_atlas.off", out = kOut + "fandisk_atlas.obj";
+  {
+    std::ifstream src(test::meshPath("fandisk.off"), std::ios::binary);
+    std::ofstream dst(in, std::ios::binary);
+    dst << src.rdbuf();
+  }
+  std::remove(out.c_str());
+  const ServerRun run =
+      meshlabserver("-i '" + in + "' -o '" + out + "' -m wt -s '" + kResources + "texture_atlas.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("charts"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("Time:"), std::string::npos);
+  std::ifstream obj(out);
+  ASSERT_TRUE(obj.good());
+  std::vector<Eigen::Vector2d> vt;
+  std::vector<std::array<Eigen::Vector2d, 3>> triangles;
+  std::string line, mtl;
+  while (std::getline(obj, line)) {
+    std::istringstream ss(line);
+    std::string key;
+    ss >> key;
+    if (key == "mtllib") ss >> mtl;
+    if (key == "vt") {
+      double u = 0, v = 0;
+      ss >> u >> v;
+      vt.emplace_back(u, v);
+    }
+    if (key == "f") {
+      std::array<Eigen::Vector2d, 3> t;
+      for (auto& corner : t) {
+        std::string ref;
+        ss >> ref;
+        const size_t slash = ref.find('/');
+        ASSERT_NE(slash, std::string::npos) << "a face without texture coordinates: " << line;
+        corner = vt.at(std::stoi(ref.substr(slash + 1)) - 1);
+      }
+      triangles.push_back(t);
+    }
+  }
+  ASSERT_EQ(triangles.size(), 12946u);  // fandisk's faces, all with UVs
+  const oracle::UvAtlasCheck c = oracle::checkUvAtlas(triangles);
+  EXPECT_EQ(c.flipped, 0);
+  EXPECT_EQ(c.zeroArea, 0);
+  EXPECT_EQ(c.overlaps, 0);
+  EXPECT_EQ(c.outsideUnitSquare, 0);
+  ASSERT_FALSE(mtl.empty());
+  std::ifstream material(kOut + mtl);
+  std::string texture;
+  while (std::getline(material, line))
+    if (line.rfind("map_Kd", 0) == 0) texture = line.substr(7);
+  ASSERT_FALSE(texture.empty()) << "no map_Kd in " << mtl;
+  EXPECT_TRUE(std::ifstream(texture[0] == '/' ? texture : kOut + texture).good()) << texture;
 }
 
 }  // namespace

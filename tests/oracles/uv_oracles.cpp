@@ -18,8 +18,8 @@ P2 point(const Eigen::Vector2d& p) { return P2(p.x(), p.y()); }
 bool properCrossing(const P2& a, const P2& b, const P2& c, const P2& d) {
   const auto o1 = CGAL::orientation(a, b, c), o2 = CGAL::orientation(a, b, d);
   const auto o3 = CGAL::orientation(c, d, a), o4 = CGAL::orientation(c, d, b);
-  return o1 != CGAL::COLLINEAR && o2 != CGAL::COLLINEAR && o1 != o2 && o3 != CGAL::COLLINEAR &&
-         o4 != CGAL::COLLINEAR && o3 != o4;
+  return o1 != CGAL::COLLINEAR && o2 != CGAL::COLLINEAR && o1 != o2 && o3 != CGAL::COLLINEAR && o4 != CGAL::COLLINEAR &&
+         o3 != o4;
 }
 
 /// p strictly inside the counter-clockwise triangle t.

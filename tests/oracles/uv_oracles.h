@@ -11,9 +11,9 @@
 namespace gr::oracle {
 
 struct UvAtlasCheck {
-  int flipped = 0;      ///< clockwise UV triangles (exact orientation)
-  int zeroArea = 0;     ///< collinear UV corners (exact orientation)
-  long overlaps = 0;    ///< pairs of triangles whose interiors meet
+  int flipped = 0;            ///< clockwise UV triangles (exact orientation)
+  int zeroArea = 0;           ///< collinear UV corners (exact orientation)
+  long overlaps = 0;          ///< pairs of triangles whose interiors meet
   int outsideUnitSquare = 0;  ///< corners with a coordinate outside [0, 1]
 };
 

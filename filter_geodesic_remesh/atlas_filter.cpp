@@ -1,9 +1,9 @@
 #include "filter_geodesic_remesh/atlas_filter.h"
 
+#include <vcg/complex/append.h>
 #include <QDir>
 #include <QFileInfo>
 #include <QImage>
-#include <vcg/complex/append.h>
 
 #include <chrono>
 #include <string>
@@ -29,8 +29,8 @@ std::string writeCheckerboard(const MeshModel& mm, int size) {
     for (int x = 0; x < size; ++x)
       image.setPixel(x, y, ((x / square + y / square) % 2) ? qRgb(235, 235, 235) : qRgb(60, 90, 160));
   const QFileInfo mesh(mm.fullName());
-  const QString dir = !mm.fullName().isEmpty() && QFileInfo(mesh.absolutePath()).isWritable() ? mesh.absolutePath()
-                                                                                            : QDir::tempPath();
+  const QString dir =
+      !mm.fullName().isEmpty() && QFileInfo(mesh.absolutePath()).isWritable() ? mesh.absolutePath() : QDir::tempPath();
   const QString base = mesh.completeBaseName().isEmpty() ? QString("mesh") : mesh.completeBaseName();
   const QString path = QDir(dir).absoluteFilePath(base + "_geodesic_atlas.png");
   return image.save(path, "PNG") ? path.toStdString() : std::string();
@@ -61,8 +61,8 @@ void logAtlas(const AtlasResult& r, const std::string& texture, double ms, Filte
           " mapped by Tutte's embedding (mean-value weights) where geodesic LLE folded, " + std::to_string(apart) +
           " laid out face by face; no flipped or overlapping triangle");
   ctx.log("Distortion: L2 stretch " + formatNumber(r.distortion.stretchL2) + ", conformal (sigma1/sigma2) mean " +
-          formatNumber(r.distortion.conformalMean) + ", max " + formatNumber(r.distortion.conformalMax) +
-          "; packing " + formatNumber(100.0 * r.packing) + "% of the texture");
+          formatNumber(r.distortion.conformalMean) + ", max " + formatNumber(r.distortion.conformalMax) + "; packing " +
+          formatNumber(100.0 * r.packing) + "% of the texture");
   if (texture.empty())
     ctx.warn("The checkerboard texture could not be written; the texture coordinates are set");
   else
@@ -98,8 +98,8 @@ void declareTextureAtlas(const MeshModel& /*mesh*/, RichParameterList& params) {
                               QString::number(d.textureSize) + ")."));
   params.addParam(RichInt(param::kGutter, d.gutter, "Gutter",
                           "Empty texels around each chart (default " + QString::number(d.gutter) + ")."));
-  params.addParam(RichInt(param::kSeed, int(d.segmentation.seed), "Seed",
-                          "Start of the segmentation's farthest-point sampling."));
+  params.addParam(
+      RichInt(param::kSeed, int(d.segmentation.seed), "Seed", "Start of the segmentation's farthest-point sampling."));
 }
 
 Status applyTextureAtlas(MeshDocument& doc, const RichParameterList& params, FilterContext& ctx) {
@@ -136,7 +136,10 @@ void declareLleFlattening(const MeshModel& /*mesh*/, RichParameterList& params) 
   params.addParam(RichInt(param::kNeighbours, d.neighbours, "Neighbours",
                           "K: nearest base points of each LLE reconstruction, 3 <= K < B (default " +
                               QString::number(d.neighbours) + ")."));
-  params.addParam(RichEnum(param::kBoundary, 0, QStringList() << "Free" << "Circle", "Boundary",
+  params.addParam(RichEnum(param::kBoundary, 0,
+                           QStringList() << "Free"
+                                         << "Circle",
+                           "Boundary",
                            "Free: the LLE map's own boundary (repaired by Tutte's embedding if it folds). Circle: "
                            "the boundary pinned to a circle (Tutte's embedding, always one-to-one)."));
   params.addParam(RichBool(param::kFlatLayer, false, "Flat layer",
@@ -166,6 +169,7 @@ Status applyLleFlattening(MeshDocument& doc, const RichParameterList& params, Fi
   writeWedgeUv(mm, current->view, cornerUv);
   if (params.getBool(param::kFlatLayer)) {
     MeshModel* flat = doc.addNewMesh("", mm.label() + " - flattened", false);
+    flat->updateDataMask(MeshModel::MM_VERTTEXCOORD | MeshModel::MM_WEDGTEXCOORD);  // copied with the mesh
     vcg::tri::Append<CMeshO, CMeshO>::MeshCopy(flat->cm, mm.cm);
     for (auto& vertex : flat->cm.vert)
       if (!vertex.IsD()) vertex.P() = Point3m(vertex.T().U(), vertex.T().V(), 0);
@@ -177,7 +181,8 @@ Status applyLleFlattening(MeshDocument& doc, const RichParameterList& params, Fi
                           (p.boundary == LleBoundary::Circle ? "Circle boundary asked" : "LLE folded") + ")"
                     : std::to_string(r->foldedBeforeRepair) + " folded triangles untangled"));
   ctx.log("Distortion: L2 stretch " + formatNumber(d.stretchL2) + ", conformal mean " + formatNumber(d.conformalMean) +
-          "; vertex and wedge texture coordinates set" + (params.getBool(param::kFlatLayer) ? ", flat layer added" : ""));
+          "; vertex and wedge texture coordinates set" +
+          (params.getBool(param::kFlatLayer) ? ", flat layer added" : ""));
   ctx.log("Time: " + formatDuration(millisecondsSince(start)));
   return Status::ok();
 }

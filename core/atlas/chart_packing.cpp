@@ -13,7 +13,8 @@ double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
 
 /// Andrew's monotone chain: the convex hull, counter-clockwise, without collinear points.
 std::vector<Vec2> convexHull(std::vector<Vec2> p) {
-  std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  std::sort(p.begin(), p.end(),
+            [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
   if (p.size() < 3) return p;
   std::vector<Vec2> h(2 * p.size());
   size_t k = 0;

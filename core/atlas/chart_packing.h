@@ -33,9 +33,9 @@ struct ChartRectangle {
 ChartRectangle alignToMinimalRectangle(std::vector<Vec2>& points);
 
 struct ChartPacking {
-  double scale = 0.0;           ///< chart units -> unit square
-  std::vector<Vec2> offset;     ///< per chart, where its rectangle's origin goes (after scaling)
-  double heightUsed = 0.0;      ///< of the unit square's height, by the shelves (<= 1)
+  double scale = 0.0;        ///< chart units -> unit square
+  std::vector<Vec2> offset;  ///< per chart, where its rectangle's origin goes (after scaling)
+  double heightUsed = 0.0;   ///< of the unit square's height, by the shelves (<= 1)
 };
 
 /// Packs the rectangles, scaled by one common factor, into [0, 1]^2 with `gutter` (in unit-square

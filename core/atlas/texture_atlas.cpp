@@ -124,8 +124,8 @@ int splitUnsurePieces(const TriMesh& mesh, std::vector<Piece>& pieces, const std
     charts[piece.chart].facesApart = true;
     for (int f : piece.faces) {
       const Tri& t = mesh.triangles[f];
-      const auto uv = layoutTriangle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]],
-                                     mesh.meanEdgeLength());
+      const auto uv =
+          layoutTriangle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], mesh.meanEdgeLength());
       kept.push_back({{f}, {uv[0], uv[1], uv[2]}, piece.chart});
     }
   }
@@ -181,9 +181,9 @@ Expected<ChartMap> flattenChart(const TriMesh& patch, const LleFlatteningParams&
     if (!checkUvInjectivity(patch, uv).injective()) return false;
     double area3 = 0.0, areaUv = 0.0;  // one scale: UV area = 3D area (the atlas's texel density)
     for (const Tri& t : patch.triangles) {
-      area3 += 0.5 * (patch.positions[t[1]] - patch.positions[t[0]])
-                         .cross(patch.positions[t[2]] - patch.positions[t[0]])
-                         .norm();
+      area3 +=
+          0.5 *
+          (patch.positions[t[1]] - patch.positions[t[0]]).cross(patch.positions[t[2]] - patch.positions[t[0]]).norm();
       const Vec2 a = uv[t[1]] - uv[t[0]], b = uv[t[2]] - uv[t[0]];
       areaUv += 0.5 * (a.x() * b.y() - a.y() * b.x());
     }
@@ -194,8 +194,8 @@ Expected<ChartMap> flattenChart(const TriMesh& patch, const LleFlatteningParams&
   };
   if (patch.vertexCount() == 3 && patch.faceCount() == 1) {  // one face: laid out as it is
     const Tri& t = patch.triangles[0];
-    const auto uv = layoutTriangle(patch.positions[t[0]], patch.positions[t[1]], patch.positions[t[2]],
-                                   patch.meanEdgeLength());
+    const auto uv =
+        layoutTriangle(patch.positions[t[0]], patch.positions[t[1]], patch.positions[t[2]], patch.meanEdgeLength());
     std::vector<Vec2> layout(3);
     for (int k = 0; k < 3; ++k) layout[t[k]] = uv[k];
     if (accept(layout)) return map;

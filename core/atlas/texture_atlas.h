@@ -50,12 +50,12 @@ struct AtlasChart {
 };
 
 struct AtlasResult {
-  std::vector<Vec2> cornerUv;    ///< per corner 3 f + k of the input: its texture coordinate
-  std::vector<int> faceChart;    ///< per face, its chart
+  std::vector<Vec2> cornerUv;  ///< per corner 3 f + k of the input: its texture coordinate
+  std::vector<int> faceChart;  ///< per face, its chart
   std::vector<AtlasChart> charts;
-  int repairedCharts = 0;        ///< charts whose LLE map was repaired (untangled or Tutte's)
-  UvDistortion distortion;       ///< of the whole atlas
-  double packing = 0.0;          ///< UV area of the charts / area of the unit square
+  int repairedCharts = 0;   ///< charts whose LLE map was repaired (untangled or Tutte's)
+  UvDistortion distortion;  ///< of the whole atlas
+  double packing = 0.0;     ///< UV area of the charts / area of the unit square
   SegmentationResult segmentation;
 };
 

@@ -108,7 +108,8 @@ UvDistortion measureUvDistortion(const TriMesh& mesh, const std::vector<Vec2>& c
   UvDistortion d;
   for (int f = 0; f < mesh.faceCount(); ++f) {
     const Tri& t = mesh.triangles[f];
-    d.area3d += 0.5 * (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm();
+    d.area3d +=
+        0.5 * (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm();
     d.areaUv += 0.5 * std::abs(cross2(cornerUv[3 * f + 1] - cornerUv[3 * f], cornerUv[3 * f + 2] - cornerUv[3 * f]));
   }
   if (!(d.area3d > 0.0) || !(d.areaUv > 0.0)) return d;

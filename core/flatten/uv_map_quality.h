@@ -26,9 +26,9 @@ namespace gr {
 using Vec2 = Eigen::Vector2d;
 
 struct UvInjectivity {
-  int nonPositiveFaces = 0;      ///< UV area <= 1e-12 of the mean |area|, or negative
-  int windingVertices = 0;       ///< interior vertices whose UV angles do not sum to 2 pi
-  int boundaryCrossings = 0;     ///< pairs of non-adjacent boundary edges that meet
+  int nonPositiveFaces = 0;   ///< UV area <= 1e-12 of the mean |area|, or negative
+  int windingVertices = 0;    ///< interior vertices whose UV angles do not sum to 2 pi
+  int boundaryCrossings = 0;  ///< pairs of non-adjacent boundary edges that meet
   bool injective() const { return nonPositiveFaces == 0 && windingVertices == 0 && boundaryCrossings == 0; }
 };
 

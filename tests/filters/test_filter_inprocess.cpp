@@ -23,6 +23,7 @@
 #include <common/GLLogStream.h>
 #include <common/meshmodel.h>
 
+#include "core/atlas/texture_atlas.h"
 #include "core/base/math.h"
 #include "core/geodesic/fast_marching.h"
 #include "core/geodesic/geodesic_surface.h"
@@ -35,6 +36,7 @@
 #include "filter_geodesic_remesh/filter_support.h"
 #include "filter_geodesic_remesh/parameter_names.h"
 #include "tests/oracles/geodesic_oracles.h"
+#include "tests/oracles/uv_oracles.h"
 #include "tests/support/cad_meshes.h"
 #include "tests/support/test_support.h"
 #include "vcg_adapters/cmesho_adapter.h"
@@ -1038,6 +1040,123 @@ TEST_F(FilterInProcess, EveryScriptListsExactlyTheDeclaredParameters) {
   EXPECT_GE(scripts, 20);
 }
 
+// --- Texture atlas and LLE flattening -------------------------------------------------------------
+
+/// The wedge texture coordinates of a layer judged by the atlas oracle: no flip, no zero area, no
+/// overlap, all in the unit square.
+void expectValidAtlas(const MeshModel& mm) {
+  ASSERT_TRUE(mm.hasDataMask(MeshModel::MM_WEDGTEXCOORD));
+  std::vector<std::array<Eigen::Vector2d, 3>> triangles;
+  Eigen::Vector2d lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+  for (const auto& f : mm.cm.face) {
+    std::array<Eigen::Vector2d, 3> t;
+    for (int k = 0; k < 3; ++k) {
+      t[k] = Eigen::Vector2d(f.cWT(k).U(), f.cWT(k).V());
+      lo = lo.cwiseMin(t[k]);
+      hi = hi.cwiseMax(t[k]);
+    }
+    triangles.push_back(t);
+  }
+  // The LLE flattening is not packed: bring it into the unit square first (a similarity).
+  const double size = std::max((hi - lo).maxCoeff(), 1e-300);
+  for (auto& t : triangles)
+    for (auto& q : t) q = hi.maxCoeff() <= 1.0 && lo.minCoeff() >= 0.0 ? q : Eigen::Vector2d((q - lo) / size);
+  const oracle::UvAtlasCheck c = oracle::checkUvAtlas(triangles);
+  EXPECT_EQ(c.flipped, 0);
+  EXPECT_EQ(c.zeroArea, 0);
+  EXPECT_EQ(c.overlaps, 0);
+  EXPECT_EQ(c.outsideUnitSquare, 0);
+}
+
+TEST_F(FilterInProcess, TextureAtlasWritesTheCoresWedgeUvsAndATexture) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  use("Parametrization: Geodesic Texture Atlas");
+  declare(*mm);
+  const AtlasParams d;
+  EXPECT_EQ(params.getInt(filters::param::kRegions), d.segmentation.regions);
+  EXPECT_EQ(params.getInt(filters::param::kIterations), d.segmentation.lloyd.iterations);
+  EXPECT_FLOAT_EQ(params.getFloat(filters::param::kFeatureAlignment), float(d.segmentation.featureAlignment));
+  EXPECT_EQ(params.getInt(filters::param::kBasePoints), d.flattening.basePoints);
+  EXPECT_EQ(params.getInt(filters::param::kNeighbours), d.flattening.neighbours);
+  EXPECT_EQ(params.getInt(filters::param::kTextureSize), d.textureSize);
+  EXPECT_EQ(params.getInt(filters::param::kGutter), d.gutter);
+  ASSERT_TRUE(apply()) << plugin.errorMsg().toStdString();
+  const Expected<adapters::CoreView> seen = adapters::toCore(mm->cm);  // as the filter sees it (float)
+  ASSERT_TRUE(seen);
+  const Expected<AtlasResult> core = buildTextureAtlas(seen->mesh, d);
+  ASSERT_TRUE(core);
+  double worst = 0.0;
+  for (int f = 0; f < fandisk.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k)
+      worst = std::max({worst, std::abs(mm->cm.face[f].WT(k).U() - core->cornerUv[3 * f + k].x()),
+                        std::abs(mm->cm.face[f].WT(k).V() - core->cornerUv[3 * f + k].y())});
+  EXPECT_LT(worst, 1e-6) << "the filter's UVs are not the core's";
+  expectValidAtlas(*mm);
+  ASSERT_EQ(mm->cm.textures.size(), 1u);
+  EXPECT_TRUE(std::filesystem::exists(mm->cm.textures[0])) << mm->cm.textures[0];
+  const std::string text = logText();
+  EXPECT_NE(text.find("charts"), std::string::npos) << text;
+  EXPECT_NE(text.find("stretch"), std::string::npos) << text;
+  EXPECT_NE(text.find("Time:"), std::string::npos) << text;
+}
+
+TEST_F(FilterInProcess, TextureAtlasBadInputLeavesTheDocumentAlone) {
+  const TriMesh grid = test::planeGrid(10);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  use("Parametrization: Geodesic Texture Atlas");
+  declare(*mm);
+  params.setValue(filters::param::kTextureSize, IntValue(8));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "TextureSize");
+  declare(*mm);
+  params.setValue(filters::param::kNeighbours, IntValue(2));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "Neighbours");
+  declare(*mm);
+  params.setValue(filters::param::kRegions, IntValue(0));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "Regions");
+}
+
+TEST_F(FilterInProcess, LleFlatteningOfADiskWithAFlatLayer) {
+  const TriMesh grid = test::planeGrid(30, 1.0, 0.2);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  use("Parametrization: Geodesic LLE Flattening");
+  declare(*mm);
+  EXPECT_EQ(params.getInt(filters::param::kBasePoints), LleFlatteningParams().basePoints);
+  EXPECT_EQ(params.getInt(filters::param::kNeighbours), LleFlatteningParams().neighbours);
+  params.setValue(filters::param::kFlatLayer, BoolValue(true));
+  const size_t layers = doc.meshList.size();
+  ASSERT_TRUE(apply()) << plugin.errorMsg().toStdString();
+  ASSERT_TRUE(mm->hasDataMask(MeshModel::MM_VERTTEXCOORD));
+  expectValidAtlas(*mm);
+  ASSERT_EQ(doc.meshList.size(), layers + 1);
+  const MeshModel* flat = doc.meshList.back();
+  ASSERT_EQ(flat->cm.vn, mm->cm.vn);
+  for (int v = 0; v < flat->cm.vn; ++v) {
+    EXPECT_EQ(flat->cm.vert[v].cP()[2], 0.0f);
+    EXPECT_EQ(flat->cm.vert[v].cP()[0], mm->cm.vert[v].cT().U());
+  }
+  // A plane flattens to itself: UV distances are the 3D ones up to one scale.
+  const auto uvDistance = [&](int a, int b) {
+    return std::hypot(mm->cm.vert[a].cT().U() - mm->cm.vert[b].cT().U(),
+                      mm->cm.vert[a].cT().V() - mm->cm.vert[b].cT().V());
+  };
+  const double scale = uvDistance(0, 30) / (grid.positions[30] - grid.positions[0]).norm();
+  EXPECT_NEAR(uvDistance(0, 960) / (grid.positions[960] - grid.positions[0]).norm(), scale, 0.02 * scale);
+}
+
+TEST_F(FilterInProcess, LleFlatteningRefusesWhatIsNotADisk) {
+  const TriMesh sphere = test::icosphere(3);
+  MeshModel* mm = addMesh(doc, sphere.positions, sphere.triangles);
+  use("Parametrization: Geodesic LLE Flattening");
+  declare(*mm);
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "topological disk");
+  const TriMesh grid = test::planeGrid(10);
+  MeshModel* g = addMesh(doc, grid.positions, grid.triangles);
+  declare(*g);
+  params.setValue(filters::param::kNeighbours, IntValue(100));
+  expectCleanFailure(*g, StatusCode::InvalidInput, "neighbours");
+}
+
 // --- Segmentation ------------------------------------------------------------------------------
 
 /// The regions in the face quality: every one an edge-connected topological disk (recounted), as
@@ -1190,7 +1309,8 @@ TEST_P(FilterDataSetSweep, EveryFilterSucceedsOrFailsCleanly) {
   for (const char* filter :
        {"Geodesic Distance: Fast Marching from Selected Vertices", "Remeshing: Geodesic Uniform",
         "Remeshing: Geodesic Adaptive", "Compute Total Curvature (Normal Cycle) into Vertex Quality",
-        "Segmentation: Geodesic Centroidal Tessellation"}) {
+        "Segmentation: Geodesic Centroidal Tessellation", "Parametrization: Geodesic Texture Atlas",
+        "Parametrization: Geodesic LLE Flattening"}) {
     SCOPED_TRACE(filter);
     use(filter);
     doc.setCurrent(mm);
@@ -1207,6 +1327,10 @@ TEST_P(FilterDataSetSweep, EveryFilterSucceedsOrFailsCleanly) {
     }
     if (std::string(filter).rfind("Segmentation", 0) == 0) {
       expectDiskRegions(*mm, logText());
+      continue;
+    }
+    if (std::string(filter).rfind("Parametrization", 0) == 0) {
+      expectValidAtlas(*mm);
       continue;
     }
     if (std::string(filter).rfind("Remeshing", 0) != 0) continue;

@@ -9,7 +9,8 @@
 # cheese.off, a CAD-like mesh of slivers: the log says the surface was refined for the fronts
 #   resources/fast_marching_vertex0.mlx     -> cheese_geodesic.ply
 # and back on the mesh: resources/segmentation_50.mlx -> <mesh>_segmentation.ply (regions in face
-#   quality and colour)
+#   quality and colour), resources/texture_atlas.mlx -> <mesh>_atlas.obj (+ .mtl and the
+#   checkerboard <mesh>_geodesic_atlas.png: wedge texture coordinates of the geodesic atlas)
 # and prints MeshLab's log of each run. The plugin is loaded from a staged prefix (build/stage),
 # not from /usr.
 set -euo pipefail
@@ -43,8 +44,13 @@ run() {  # run <script.mlx> <output.ply> <what the output holds> [input mesh, de
   echo "== exit code $rc"
   [ $rc -eq 0 ] && [ -s "$out" ] || { echo "main: meshlabserver failed" >&2; exit 1; }
   local nv nf
-  nv=$(grep -a -m1 '^element vertex' "$out" | awk '{print $3}')
-  nf=$(grep -a -m1 '^element face' "$out" | awk '{print $3}')
+  if [[ $out == *.obj ]]; then
+    nv=$(grep -c '^v ' "$out")
+    nf=$(grep -c '^f ' "$out")
+  else
+    nv=$(grep -a -m1 '^element vertex' "$out" | awk '{print $3}')
+    nf=$(grep -a -m1 '^element face' "$out" | awk '{print $3}')
+  fi
   echo "== wrote $out: $nv vertices, $nf faces; $what"
   echo
 }
@@ -60,3 +66,9 @@ run "$root/resources/fast_marching_vertex0.mlx" "$root/output/cheese_geodesic.pl
 run "$root/resources/segmentation_50.mlx" "$root/output/${name}_segmentation.ply" \
     "50 regions of a geodesic centroidal tessellation, each a disk: region in face quality, one colour per region" \
     "$mesh" "fq fc"
+# The atlas writes its checkerboard PNG next to the mesh it reads: a copy of the mesh in output/.
+atlas_input="$root/output/${name}.${mesh##*.}"
+cp "$mesh" "$atlas_input"
+run "$root/resources/texture_atlas.mlx" "$root/output/${name}_atlas.obj" \
+    "geodesic texture atlas: per-wedge UVs, OBJ + MTL + checkerboard PNG (output/${name}_geodesic_atlas.png)" \
+    "$atlas_input" "wt"

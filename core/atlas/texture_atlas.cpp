@@ -145,8 +145,12 @@ Status packPieces(std::vector<Piece>& pieces, const AtlasParams& params, AtlasRe
     const Piece& piece = pieces[i];
     for (size_t j = 0; j < piece.faces.size(); ++j) {
       for (int k = 0; k < 3; ++k) {
-        const Vec2 uv = packing->offset[i] + packing->scale * piece.cornerUv[3 * j + k];
-        r.cornerUv[3 * piece.faces[j] + k] = uv.cwiseMax(Vec2::Zero()).cwiseMin(Vec2::Ones());
+        const Vec2 uv = (packing->offset[i] + packing->scale * piece.cornerUv[3 * j + k])
+                            .cwiseMax(Vec2::Zero())
+                            .cwiseMin(Vec2::Ones());
+        // Rounded to float, as MeshLab holds texture coordinates: the orientation checks below
+        // judge what the mesh will carry.
+        r.cornerUv[3 * piece.faces[j] + k] = Vec2(double(float(uv.x())), double(float(uv.y())));
       }
       const int f = piece.faces[j];
       const Vec2 a = r.cornerUv[3 * f + 1] - r.cornerUv[3 * f], b = r.cornerUv[3 * f + 2] - r.cornerUv[3 * f];
@@ -173,12 +177,37 @@ Status checkAtlasParams(const TriMesh& mesh, const AtlasParams& p) {
   return Status::ok();
 }
 
+/// Whether a chart's map fills at least kMinimumFill of its minimal bounding rectangle: a
+/// one-to-one map can still be a long thin spiral or have a spike that makes its rectangle huge,
+/// and packing then shrinks every other chart to nothing.
+constexpr double kMinimumFill = 0.05;
+bool compact(const TriMesh& patch, const std::vector<Vec2>& uv) {
+  std::vector<Vec2> points = uv;
+  const ChartRectangle r = alignToMinimalRectangle(points);
+  double area = 0.0;
+  for (const Tri& t : patch.triangles) {
+    const Vec2 a = uv[t[1]] - uv[t[0]], b = uv[t[2]] - uv[t[0]];
+    area += 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+  }
+  return area >= kMinimumFill * r.width * r.height;
+}
+
+/// Whether a chart's L2 stretch (at its own area scale) is above kMaxChartStretch: a one-to-one
+/// map can squash a chart into a needle (a chart of 12 faces on cactus.off, 96 long and 0.0002
+/// wide), which then takes the whole texture. Such a chart is mapped again, or laid out by faces.
+constexpr double kMaxChartStretch = 4.0;
+bool stretched(const TriMesh& patch, const std::vector<Vec2>& uv) {
+  std::vector<Vec2> cornerUv(3 * patch.faceCount());
+  for (int c = 0; c < 3 * patch.faceCount(); ++c) cornerUv[c] = uv[patch.vertex(c)];
+  return !(measureUvDistortion(patch, cornerUv).stretchL2 <= kMaxChartStretch);
+}
+
 }  // namespace
 
 Expected<ChartMap> flattenChart(const TriMesh& patch, const LleFlatteningParams& params, Progress progress) {
   ChartMap map;
   const auto accept = [&](std::vector<Vec2> uv) {
-    if (!checkUvInjectivity(patch, uv).injective()) return false;
+    if (!checkUvInjectivity(patch, uv).injective() || !compact(patch, uv) || stretched(patch, uv)) return false;
     double area3 = 0.0, areaUv = 0.0;  // one scale: UV area = 3D area (the atlas's texel density)
     for (const Tri& t : patch.triangles) {
       area3 +=

@@ -42,6 +42,11 @@ Status checkPatch(const TriMesh& patch, const LleFlatteningParams& p) {
         std::to_string(t.components) + " components, " + std::to_string(t.boundaryLoops) +
         " boundary loops, Euler characteristic " + std::to_string(t.eulerCharacteristic) + " (genus " +
         std::to_string(t.genus) + ")");
+  if (t.inconsistentEdges > 0)
+    return invalidInput("LLE flattening: the faces are not coherently oriented (" +
+                        std::to_string(t.inconsistentEdges) +
+                        " edges between faces of opposite orientation), so no map can keep every face's "
+                        "orientation; re-orient them first");
   if (t.isolatedVertices > 0)
     return invalidInput("LLE flattening: " + std::to_string(t.isolatedVertices) + " vertices are in no face");
   for (const Vec3& q : patch.positions)

@@ -1,0 +1,165 @@
+// Texture atlas benchmarks (issue 19):
+//   Atlas/<mesh>            gr::buildTextureAtlas with the defaults (what the filter runs): the
+//                           segmentation, per-chart geodesic LLE, packing. Process CPU time.
+//   MeshLabVoronoiAtlas/<mesh>  MeshLab 2020.09's "Parametrization: Voronoi Atlas" through the system
+//                           meshlabserver (xvfb-run, wall time of the whole process: start, plugin
+//                           loading, reading and writing included), regionNum = our chart count.
+// Meshes: fandisk, bunny00, and bunny00 subdivided twice (1-to-4 midpoint, 602,690 vertices; one
+// iteration). Counters, for both, measured the same way on the output's per-corner UVs: charts,
+// L2 stretch and mean conformal distortion (gr::measureUvDistortion), packing (UV area / unit
+// square), and the oracle's flipped and overlapping triangles (tests/oracles/uv_oracles.h).
+#include <benchmark/benchmark.h>
+
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench/bench_support.h"
+#include "core/atlas/texture_atlas.h"
+#include "tests/oracles/uv_oracles.h"
+
+namespace {
+
+struct Case {
+  const char* name;
+  const char* file;
+  int subdivisions;
+};
+
+const Case kCases[] = {{"fandisk", "fandisk.off", 0}, {"bunny00", "bunny00.off", 0}, {"bunny00_sub2", "bunny00.off", 2}};
+
+void setUvCounters(benchmark::State& state, const gr::TriMesh& mesh, const std::vector<gr::Vec2>& cornerUv,
+                   int charts) {
+  const gr::UvDistortion d = gr::measureUvDistortion(mesh, cornerUv);
+  std::vector<std::array<Eigen::Vector2d, 3>> triangles(mesh.faceCount());
+  double area = 0.0;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    for (int k = 0; k < 3; ++k) triangles[f][k] = cornerUv[3 * f + k];
+    const Eigen::Vector2d a = triangles[f][1] - triangles[f][0], b = triangles[f][2] - triangles[f][0];
+    area += 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+  }
+  const gr::oracle::UvAtlasCheck c = gr::oracle::checkUvAtlas(triangles);
+  state.counters["vertices"] = mesh.vertexCount();
+  state.counters["charts"] = charts;
+  state.counters["stretch"] = d.stretchL2;
+  state.counters["conformal"] = d.conformalMean;
+  state.counters["packing"] = area;
+  state.counters["flipped"] = c.flipped + c.zeroArea;
+  state.counters["overlaps"] = static_cast<double>(c.overlaps);
+}
+
+int lastCharts(const std::string& name, int charts = -1) {
+  static std::map<std::string, int> count;
+  if (charts >= 0) count[name] = charts;
+  return count.count(name) ? count[name] : 60;
+}
+
+void BM_Atlas(benchmark::State& state, const Case& c) {
+  const gr::TriMesh* mesh = gr::bench::cachedMesh<gr::TriMesh>(state, c.name, c.file, c.subdivisions);
+  if (!mesh) return;
+  gr::Expected<gr::AtlasResult> r = gr::internalError("not run");
+  for (auto _ : state) r = gr::buildTextureAtlas(*mesh);
+  if (!r) return state.SkipWithError(r.status().message.c_str());
+  lastCharts(c.name, static_cast<int>(r->charts.size()));
+  setUvCounters(state, *mesh, r->cornerUv, static_cast<int>(r->charts.size()));
+  state.counters["repaired"] = r->repairedCharts;
+}
+
+/// MeshLab's OBJ (v, vt, f v/vt): the faces with their positions and per-corner UVs.
+bool readObj(const std::string& path, gr::TriMesh& mesh, std::vector<gr::Vec2>& cornerUv) {
+  std::ifstream in(path);
+  std::vector<gr::Vec3> v;
+  std::vector<gr::Vec2> vt;
+  std::vector<gr::Tri> tris;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream ss(line);
+    std::string key;
+    ss >> key;
+    if (key == "v") {
+      double x, y, z;
+      ss >> x >> y >> z;
+      v.emplace_back(x, y, z);
+    } else if (key == "vt") {
+      double a, b;
+      ss >> a >> b;
+      vt.emplace_back(a, b);
+    } else if (key == "f") {
+      gr::Tri t;
+      for (int k = 0; k < 3; ++k) {
+        std::string ref;
+        ss >> ref;
+        const size_t slash = ref.find('/');
+        if (slash == std::string::npos) return false;
+        t[k] = std::stoi(ref) - 1;
+        cornerUv.push_back(vt.at(std::stoi(ref.substr(slash + 1)) - 1));
+      }
+      tris.push_back(t);
+    }
+  }
+  gr::Expected<gr::TriMesh> m = gr::buildTriMesh(std::move(v), std::move(tris));
+  if (!m) return false;
+  mesh = std::move(*m);
+  return true;
+}
+
+void BM_MeshLabVoronoiAtlas(benchmark::State& state, const Case& c) {
+  char dirTemplate[] = "/tmp/bench_atlas_XXXXXX";
+  if (!mkdtemp(dirTemplate)) return state.SkipWithError("mkdtemp failed");
+  const std::string dir = dirTemplate, script = dir + "/va.mlx", out = dir + "/out.obj", log = dir + "/log.txt";
+  std::string input = gr::bench::benchMeshPath(c.file);
+  if (c.subdivisions > 0) {  // the same subdivided mesh as ours, written once
+    const gr::TriMesh* mesh = gr::bench::cachedMesh<gr::TriMesh>(state, c.name, c.file, c.subdivisions);
+    if (!mesh) return;
+    input = dir + "/in.off";
+    std::ofstream off(input);
+    off << "OFF\n" << mesh->vertexCount() << " " << mesh->faceCount() << " 0\n";
+    for (const gr::Vec3& p : mesh->positions) off << p.x() << " " << p.y() << " " << p.z() << "\n";
+    for (const gr::Tri& t : mesh->triangles) off << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  }
+  std::ofstream(script) << "<!DOCTYPE FilterScript>\n<FilterScript>\n"
+                           " <filter name=\"Parametrization: Voronoi Atlas\">\n"
+                           "  <Param type=\"RichInt\" name=\"regionNum\" value=\""
+                        << lastCharts(c.name)
+                        << "\"/>\n"
+                           "  <Param type=\"RichBool\" name=\"overlapFlag\" value=\"false\"/>\n"
+                           " </filter>\n</FilterScript>\n";
+  const std::string command = "xvfb-run -a meshlabserver -i '" + input + "' -o '" + out + "' -m wt -s '" + script +
+                              "' > '" + log + "' 2>&1";
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const int rc = std::system(command.c_str());
+    state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    if (rc != 0) return state.SkipWithError(("meshlabserver failed, see " + log).c_str());
+  }
+  gr::TriMesh mesh;
+  std::vector<gr::Vec2> cornerUv;
+  if (!readObj(out, mesh, cornerUv)) return state.SkipWithError(("cannot read " + out).c_str());
+  setUvCounters(state, mesh, cornerUv, lastCharts(c.name));
+}
+
+void registerAll() {
+  for (const Case& c : kCases) {
+    auto* b = benchmark::RegisterBenchmark((std::string("Atlas/") + c.name).c_str(), BM_Atlas, c)
+                  ->Unit(benchmark::kMillisecond)
+                  ->MeasureProcessCPUTime();
+    if (c.subdivisions > 0) b->Iterations(1);
+  }
+  for (const Case& c : kCases)
+    benchmark::RegisterBenchmark((std::string("MeshLabVoronoiAtlas/") + c.name).c_str(), BM_MeshLabVoronoiAtlas, c)
+        ->Unit(benchmark::kMillisecond)
+        ->UseManualTime()
+        ->Iterations(1);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return gr::bench::runBenchmarks(argc, argv, registerAll); }

@@ -20,11 +20,11 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// A checkerboard of 16 x 16 squares, written next to the mesh's file (or in the temporary folder
+/// A checkerboard of 32 x 32 squares, written next to the mesh's file (or in the temporary folder
 /// for a mesh without one): the absolute path, or an empty string if it could not be written.
 std::string writeCheckerboard(const MeshModel& mm, int size) {
   QImage image(size, size, QImage::Format_RGB32);
-  const int square = std::max(1, size / 16);
+  const int square = std::max(1, size / 32);
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x)
       image.setPixel(x, y, ((x / square + y / square) % 2) ? qRgb(235, 235, 235) : qRgb(60, 90, 160));

@@ -40,7 +40,7 @@ run() {  # run <script.mlx> <output.ply> <what the output holds> [input mesh, de
   # labels with no line break, so a run of them can prefix the next log line: a label directly
   # followed by a letter (the next label or log line, with no space) is cut.
   echo "$log" | grep -vE "^LOG: |XDG_RUNTIME_DIR|no additional memory|^Loading Plugins|^Total [0-9]+ (filtering|io)|Current Plugins Dir|^$" |
-    sed -E ':a; s/^(Farthest point sampling|Fast marching|intrinsic Delaunay refinement|Geodesic Delaunay repair|Relaxation|Curvature|Surface distance|Geodesic Lloyd)([A-Za-z])/\2/; ta' | sed 's/^/  /'
+    sed -E ':a; s/^(Farthest point sampling|Fast marching|intrinsic Delaunay refinement|Geodesic Delaunay repair|Relaxation|Curvature|Surface distance|Geodesic Lloyd|Texture atlas: flattening the charts|Texture atlas: packing)([A-Za-z])/\2/; ta' | sed 's/^/  /'
   echo "== exit code $rc"
   [ $rc -eq 0 ] && [ -s "$out" ] || { echo "main: meshlabserver failed" >&2; exit 1; }
   local nv nf
@@ -72,3 +72,7 @@ cp "$mesh" "$atlas_input"
 run "$root/resources/texture_atlas.mlx" "$root/output/${name}_atlas.obj" \
     "geodesic texture atlas: per-wedge UVs, OBJ + MTL + checkerboard PNG (output/${name}_geodesic_atlas.png)" \
     "$atlas_input" "wt"
+# The same as PLY (texture named in a header comment): what MeshLab 2020.09 opens (its OBJ importer
+# aborts on OBJ files, its own included).
+run "$root/resources/texture_atlas.mlx" "$root/output/${name}_atlas.ply" \
+    "geodesic texture atlas as PLY with per-face texture coordinates, for MeshLab" "$atlas_input" "wt"

@@ -30,24 +30,34 @@ std::vector<Vec2> convexHull(std::vector<Vec2> p) {
   return h;
 }
 
-/// Height of the shelves holding the rectangles (sorted by decreasing height) at `scale`, or +inf
-/// if one is wider than the square. Fills `offset` (indexed like `order`'s entries).
+/// Height of the shelves holding the rectangles (sorted by decreasing height, first fit: each goes
+/// on the lowest shelf with room left, else on a new shelf on top) at `scale`, or +inf if one is
+/// wider than the square. Fills `offset` (indexed like `order`'s entries).
 double shelfHeight(const std::vector<ChartRectangle>& r, const std::vector<int>& order, double scale, double gutter,
                    std::vector<Vec2>* offset) {
-  double x = 0.0, y = 0.0, shelf = 0.0;
+  struct Shelf {
+    double y, height, x;
+  };
+  std::vector<Shelf> shelves;
+  double top = 0.0;
   for (int c : order) {
     const double w = scale * r[c].width + 2.0 * gutter, h = scale * r[c].height + 2.0 * gutter;
     if (w > 1.0) return INFINITY;
-    if (x + w > 1.0) {  // next shelf
-      y += shelf;
-      x = 0.0;
-      shelf = 0.0;
+    Shelf* shelf = nullptr;
+    for (Shelf& s : shelves)
+      if (s.x + w <= 1.0) {
+        shelf = &s;
+        break;
+      }
+    if (!shelf) {
+      shelves.push_back({top, h, 0.0});  // the first on its shelf is the tallest of it
+      top += h;
+      shelf = &shelves.back();
     }
-    if (offset) (*offset)[c] = Vec2(x + gutter, y + gutter);
-    x += w;
-    shelf = std::max(shelf, h);
+    if (offset) (*offset)[c] = Vec2(shelf->x + gutter, shelf->y + gutter);
+    shelf->x += w;
   }
-  return y + shelf;
+  return top;
 }
 
 }  // namespace

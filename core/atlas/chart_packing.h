@@ -3,13 +3,13 @@
 //
 //   chart UVs --convex hull, rotating calipers--> rotated so that its minimal-area bounding
 //   rectangle is axis-aligned at the origin, wider than tall
-//   rectangles --sorted by height, shelves left to right, bottom to top, each padded by the
-//   gutter on every side--> offsets; the scale is found by bisection (the shelves' height is
+//   rectangles --sorted by height, first fit on shelves (each on the lowest shelf with room, else
+//   on a new shelf on top), each padded by the gutter on every side--> offsets; the scale is found by bisection (the shelves' height is
 //   checked for each trial scale) so that the packing fills [0, 1]^2 as far as shelves allow.
 //
 // Charts in distinct rectangles never overlap, and the gutter keeps texture filtering of one
-// chart from bleeding into another. Cost: O(n log n) per chart (the hull), O(C log C + 60 C) to
-// pack C charts.
+// chart from bleeding into another. Cost: O(n log n) per chart (the hull), O(60 C S) to pack C
+// charts on S shelves.
 #pragma once
 
 #include <vector>

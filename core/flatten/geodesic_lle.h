@@ -9,11 +9,11 @@
 //     --the 2nd and 3rd eigenvectors of (I - W)^T (I - W) (Eigen, dense, B x B)--> y_1..y_B
 //     --a 2x2 metric correction S (least squares: (y_i - y_j)^T S (y_i - y_j) = d_ij^2 over the
 //       neighbour pairs; LLE's own normalisation makes the embedding's covariance the identity,
-//       which squashes an elongated patch), then 30 rounds of stress majorisation on the same
+//       which squashes an elongated patch), then 60 rounds of stress majorisation on the same
 //       pairs (LLE gives the layout's shape, not its lengths) --> base points in the plane
 //     --Nyström (Bengio et al. 2003): each vertex's weights on its K nearest bases, from the same
 //       distances (regulariser 0.1: a vertex's distances carry the fronts' error at the scale of
-//       an edge), and uv_v = sum_j w_j y_j; then 10 rounds of harmonic smoothing (positive
+//       an edge), and uv_v = sum_j w_j y_j; then 20 rounds of harmonic smoothing (positive
 //       cotangent weights) of the vertices that are neither bases nor on the boundary
 //     --UV triangles turned over or of zero area, on at most 20% of the faces: their vertices
 //       (and every 5 rounds a ring more) move to the mean of their neighbours' UVs, up to 60
@@ -59,10 +59,10 @@ struct LleFlatteningParams {
   double extensionRegularisation = 0.1;
   /// Rounds of stress majorisation of the bases' layout on their K-neighbour distances after LLE
   /// (0 = LLE's layout with the 2x2 correction only).
-  int stressRounds = 30;
+  int stressRounds = 60;
   /// Rounds of harmonic smoothing of the extended UVs, the base points fixed (0 = the Nyström
   /// values as they are).
-  int smoothingRounds = 10;
+  int smoothingRounds = 20;
   LleBoundary boundary = LleBoundary::Free;
   unsigned seed = 0;  ///< the sampling's start
 };

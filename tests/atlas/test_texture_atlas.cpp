@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
@@ -132,7 +133,35 @@ struct AtlasFigures {
   oracle::UvAtlasCheck check;
   int nonDiskCharts = 0;
   double densitySpread = 0.0;  ///< max / min over charts of UV area / 3D area, minus 1
+  double stretch = 0.0;        ///< Sander's L2 stretch, UVs scaled to the 3D area (recomputed here)
+  double conformal = 0.0;      ///< area-weighted mean of sigma1 / sigma2 of the UV -> 3D Jacobian
 };
+
+/// Sander et al.'s L2 stretch and the mean conformal distortion, from the triangles alone.
+void distortion(const TriMesh& m, const std::vector<std::array<Eigen::Vector2d, 3>>& uv, AtlasFigures& fig) {
+  double area3 = 0.0, area2 = 0.0;
+  for (int f = 0; f < m.faceCount(); ++f) {
+    const Tri& t = m.triangles[f];
+    area3 += 0.5 * (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]).norm();
+    area2 += signedArea(uv[f][0], uv[f][1], uv[f][2]);
+  }
+  const double scale = std::sqrt(area3 / area2);
+  double stretch = 0.0, conformal = 0.0;
+  for (int f = 0; f < m.faceCount(); ++f) {
+    const Tri& t = m.triangles[f];
+    const Vec3 &q1 = m.positions[t[0]], &q2 = m.positions[t[1]], &q3 = m.positions[t[2]];
+    const Vec2 p1 = scale * uv[f][0], p2 = scale * uv[f][1], p3 = scale * uv[f][2];
+    const double a2 = 2.0 * signedArea(p1, p2, p3), area = 0.5 * (q2 - q1).cross(q3 - q1).norm();
+    const Vec3 ss = (q1 * (p2.y() - p3.y()) + q2 * (p3.y() - p1.y()) + q3 * (p1.y() - p2.y())) / a2;
+    const Vec3 st = (q1 * (p3.x() - p2.x()) + q2 * (p1.x() - p3.x()) + q3 * (p2.x() - p1.x())) / a2;
+    const Eigen::Matrix<double, 3, 2> j = (Eigen::Matrix<double, 3, 2>() << ss, st).finished();
+    const Eigen::Vector2d sigma = Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2>>(j).singularValues();
+    stretch += area * 0.5 * (ss.squaredNorm() + st.squaredNorm());
+    if (area > 0.0) conformal += area * sigma[0] / sigma[1];
+  }
+  fig.stretch = std::sqrt(stretch / area3);
+  fig.conformal = conformal / area3;
+}
 
 AtlasFigures judge(const TriMesh& m, const AtlasResult& r) {
   AtlasFigures fig;
@@ -160,6 +189,7 @@ AtlasFigures judge(const TriMesh& m, const AtlasResult& r) {
     }
   }
   fig.densitySpread = hi / lo - 1.0;
+  distortion(m, triangles, fig);
   return fig;
 }
 
@@ -171,9 +201,11 @@ void expectValid(const AtlasFigures& fig) {
   EXPECT_EQ(fig.nonDiskCharts, 0);
 }
 
-// fandisk and bunny00 with the defaults: a valid atlas, one texel density, and the figures of
-// issue 19 printed (stretch, conformal distortion, packing: see docs/BENCHMARKS.md for where they
-// stand against the issue's targets).
+// fandisk and bunny00 with the defaults: a valid atlas, one texel density, the figures recomputed
+// here against the core's, and on bunny00 the bounds of issue 19 (at most 100 charts, L2 stretch
+// <= 1.05, mean conformal distortion <= 1.10, packing >= 0.55; Blender's Smart UV Project: 293
+// charts, 1.020, 1.186, 0.45). fandisk's bounds (<= 30 charts with stretch <= 1.02) are not
+// reached: docs/BENCHMARKS.md.
 TEST(TextureAtlas, DefaultsOnFandiskAndBunny) {
   for (const char* name : {"fandisk.off", "bunny00.off"}) {
     SCOPED_TRACE(name);
@@ -187,8 +219,16 @@ TEST(TextureAtlas, DefaultsOnFandiskAndBunny) {
     expectValid(fig);
     EXPECT_LT(fig.densitySpread, 1e-6);
     EXPECT_EQ(static_cast<int>(r->charts.size()), r->segmentation.regions);
+    EXPECT_NEAR(fig.stretch, r->distortion.stretchL2, 1e-6);
+    EXPECT_NEAR(fig.conformal, r->distortion.conformalMean, 1e-6);
     EXPECT_GT(r->packing, 0.4);
     EXPECT_LT(r->packing, 1.0);
+    if (std::string(name) == "bunny00.off") {
+      EXPECT_LE(r->charts.size(), 100u);
+      EXPECT_LE(fig.stretch, 1.05);
+      EXPECT_LE(fig.conformal, 1.10);
+      EXPECT_GE(r->packing, 0.55);
+    }
   }
 }
 

@@ -8,11 +8,13 @@
 // Meshes: fandisk, bunny00, and bunny00 subdivided twice (1-to-4 midpoint, 602,690 vertices; one
 // iteration). Counters, for both, measured the same way on the output's per-corner UVs: charts,
 // L2 stretch and mean conformal distortion (gr::measureUvDistortion), packing (UV area / unit
-// square), and the oracle's flipped and overlapping triangles (tests/oracles/uv_oracles.h).
+// square), and the oracle's flipped and overlapping triangles (tests/oracles/uv_oracles.h); for
+// ours also, per chart, the conformal distortion over CGAL's LSCM's on the same chart.
 #include <benchmark/benchmark.h>
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -64,6 +66,52 @@ int lastCharts(const std::string& name, int charts = -1) {
   return count.count(name) ? count[name] : 60;
 }
 
+/// Per chart (untimed): our conformal distortion over CGAL's LSCM's on the same chart. Counters
+/// `lscm_worst` (the largest ratio) and `lscm_within_1_5` (share of charts at most 1.5x LSCM's).
+void compareWithLscm(benchmark::State& state, const gr::TriMesh& mesh, const gr::AtlasResult& r) {
+  std::vector<std::vector<int>> facesOf(r.charts.size());
+  for (int f = 0; f < mesh.faceCount(); ++f) facesOf[r.faceChart[f]].push_back(f);
+  std::vector<int> local(mesh.vertexCount(), -1);
+  double worst = 0.0;
+  int within = 0, compared = 0;
+  for (const std::vector<int>& faces : facesOf) {
+    std::vector<gr::Vec3> positions;
+    std::vector<gr::Tri> tris;
+    std::vector<int> used;
+    for (int f : faces) {
+      gr::Tri t;
+      for (int k = 0; k < 3; ++k) {
+        const int v = mesh.triangles[f][k];
+        if (local[v] < 0) {
+          local[v] = static_cast<int>(positions.size());
+          positions.push_back(mesh.positions[v]);
+          used.push_back(v);
+        }
+        t[k] = local[v];
+      }
+      tris.push_back(t);
+    }
+    for (int v : used) local[v] = -1;
+    gr::Expected<gr::TriMesh> patch = gr::buildTriMesh(positions, tris);
+    if (!patch) continue;
+    const std::vector<Eigen::Vector2d> lscm = gr::oracle::cgalLscm(*patch);
+    if (lscm.empty()) continue;
+    std::vector<gr::Vec2> ours(3 * faces.size()), theirs(3 * faces.size());
+    for (size_t j = 0; j < faces.size(); ++j)
+      for (int k = 0; k < 3; ++k) {
+        ours[3 * j + k] = r.cornerUv[3 * faces[j] + k];
+        theirs[3 * j + k] = lscm[tris[j][k]];
+      }
+    const double ratio =
+        gr::measureUvDistortion(*patch, ours).conformalMean / gr::measureUvDistortion(*patch, theirs).conformalMean;
+    worst = std::max(worst, ratio);
+    within += ratio <= 1.5;
+    ++compared;
+  }
+  state.counters["lscm_worst"] = worst;
+  state.counters["lscm_within_1_5"] = compared > 0 ? double(within) / compared : 0.0;
+}
+
 void BM_Atlas(benchmark::State& state, const Case& c) {
   const gr::TriMesh* mesh = gr::bench::cachedMesh<gr::TriMesh>(state, c.name, c.file, c.subdivisions);
   if (!mesh) return;
@@ -73,6 +121,7 @@ void BM_Atlas(benchmark::State& state, const Case& c) {
   lastCharts(c.name, static_cast<int>(r->charts.size()));
   setUvCounters(state, *mesh, r->cornerUv, static_cast<int>(r->charts.size()));
   state.counters["repaired"] = r->repairedCharts;
+  compareWithLscm(state, *mesh, *r);
 }
 
 /// MeshLab's OBJ (v, vt, f v/vt): the faces with their positions and per-corner UVs.

@@ -1,6 +1,11 @@
 #include "tests/oracles/uv_oracles.h"
 
+#include "tests/oracles/cgal_mesh.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include <algorithm>
 #include <cmath>
@@ -85,6 +90,25 @@ UvAtlasCheck checkUvAtlas(const std::vector<std::array<Eigen::Vector2d, 3>>& tri
       }
   }
   return r;
+}
+
+std::vector<Eigen::Vector2d> cgalLscm(const TriMesh& patch) {
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  Expected<std::unique_ptr<SurfaceMesh>> sm = toSurfaceMesh(patch);
+  if (!sm) return {};
+  SurfaceMesh& mesh = **sm;
+  const auto border = CGAL::Polygon_mesh_processing::longest_border(mesh).first;
+  if (border == SurfaceMesh::null_halfedge()) return {};
+  auto uvMap = mesh.add_property_map<SmVertex, K::Point_2>("v:gr_uv").first;
+  using Parameterizer = SMP::LSCM_parameterizer_3<SurfaceMesh>;
+  try {
+    if (SMP::parameterize(mesh, Parameterizer(), border, uvMap) != SMP::OK) return {};
+  } catch (...) {
+    return {};
+  }
+  std::vector<Eigen::Vector2d> uv(patch.vertexCount());
+  for (SmVertex v : mesh.vertices()) uv[v.idx()] = Eigen::Vector2d(uvMap[v].x(), uvMap[v].y());
+  return uv;
 }
 
 }  // namespace gr::oracle

@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "core/mesh/tri_mesh.h"
+
 namespace gr::oracle {
 
 struct UvAtlasCheck {
@@ -23,5 +25,11 @@ struct UvAtlasCheck {
 /// coincide; triangles that only share edges or corners do not overlap. Broad phase: a uniform
 /// grid on the bounding boxes. Flipped and zero-area triangles are left out of the overlap count.
 UvAtlasCheck checkUvAtlas(const std::vector<std::array<Eigen::Vector2d, 3>>& triangles);
+
+/// CGAL 5.5's least-squares conformal map (Lévy et al. 2002, Surface_mesh_parameterization::
+/// LSCM_parameterizer_3, two pinned vertices on the longest border) of a topological disk: one UV
+/// per vertex of `patch`, or empty if CGAL refuses or fails. The anchor of the atlas's per-chart
+/// conformal distortion (issue 19).
+std::vector<Eigen::Vector2d> cgalLscm(const TriMesh& patch);
 
 }  // namespace gr::oracle

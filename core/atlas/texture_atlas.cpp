@@ -276,8 +276,15 @@ Expected<AtlasResult> buildTextureAtlas(const TriMesh& mesh, const AtlasParams& 
   if (!progress.report(0.95, "Texture atlas: packing")) return cancelled();
   r.cornerUv.assign(3 * mesh.faceCount(), Vec2::Zero());
   if (Status s = packPieces(pieces, params, r); !s) return s;
-  if (splitUnsurePieces(mesh, pieces, r.cornerUv, r.charts) > 0) {  // then packed again; single faces are sure
+  if (splitUnsurePieces(mesh, pieces, r.cornerUv, r.charts) > 0) {  // then packed again
     if (Status s = packPieces(pieces, params, r); !s) return s;
+    // A face laid out on its own is fat, so only a face far below a texel can still be unsure:
+    // refused rather than shipped turned over.
+    for (int f = 0; f < mesh.faceCount(); ++f)
+      if (!surelyCounterClockwise(r.cornerUv[3 * f], r.cornerUv[3 * f + 1], r.cornerUv[3 * f + 2]))
+        return degenerate("texture atlas: face " + std::to_string(f) +
+                          " is too small for the texture's precision even on its own; remove tiny faces first "
+                          "(Filters > Cleaning and Repairing)");
   }
   for (const AtlasChart& chart : r.charts)
     r.repairedCharts += chart.tutte || chart.facesApart || chart.foldedBeforeRepair > 0;

@@ -59,14 +59,17 @@ struct AtlasResult {
   SegmentationResult segmentation;
 };
 
-/// Builds the atlas of `mesh` (manifold; any genus, boundaries, components: the segmentation
-/// makes every region a disk). Fails as segmentSurface, with InvalidInput on textureSize < 16,
-/// gutter < 0, or charts that cannot fit with that gutter, and Cancelled.
+/// Builds the atlas of `mesh` (manifold, coherently oriented; any genus, boundaries, components:
+/// the segmentation makes every region a disk). Fails as segmentSurface, with InvalidInput on
+/// textureSize < 16, gutter < 0, faces not coherently oriented, or charts that cannot fit with that
+/// gutter, NonManifold, Degenerate (a face too small for the texture's float precision even laid
+/// out alone), and Cancelled.
 Expected<AtlasResult> buildTextureAtlas(const TriMesh& mesh, const AtlasParams& params = {}, Progress progress = {});
 
 /// One chart's map: `patch` (a topological disk) flattened by geodesic LLE with B and K capped to
-/// its size, checked with checkUvInjectivity, Tutte's embedding if not one-to-one; UV area = 3D
-/// area, counter-clockwise. Empty uv if neither is one-to-one (the caller lays the faces apart).
+/// its size, checked with checkUvInjectivity, compact (>= 5% of its bounding rectangle) and with an
+/// L2 stretch <= 4, else Tutte's embedding with the same checks; UV area = 3D area,
+/// counter-clockwise. Empty uv if neither passes (the caller lays the faces apart).
 struct ChartMap {
   std::vector<Vec2> uv;
   bool tutte = false;

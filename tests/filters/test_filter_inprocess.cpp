@@ -1144,6 +1144,26 @@ TEST_F(FilterInProcess, LleFlatteningOfADiskWithAFlatLayer) {
   EXPECT_NEAR(uvDistance(0, 960) / (grid.positions[960] - grid.positions[0]).norm(), scale, 0.02 * scale);
 }
 
+TEST_F(FilterInProcess, AtlasAndFlatteningRefuseBadMeshesCleanly) {
+  for (const char* filter : {"Parametrization: Geodesic Texture Atlas", "Parametrization: Geodesic LLE Flattening"}) {
+    SCOPED_TRACE(filter);
+    use(filter);
+    MeshModel* cloud = addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {});
+    declare(*cloud);
+    expectCleanFailure(*cloud, StatusCode::InvalidInput, "the mesh has no faces");
+    TriMesh grid = test::planeGrid(10);
+    grid.positions[7].y() = NAN;
+    MeshModel* nan = addMesh(doc, grid.positions, grid.triangles);
+    declare(*nan);
+    expectCleanFailure(*nan, StatusCode::InvalidInput, "non-finite");
+    // Three triangles on one edge.
+    MeshModel* nm =
+        addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+    declare(*nm);
+    expectCleanFailure(*nm, StatusCode::NonManifold, "non-manifold");
+  }
+}
+
 TEST_F(FilterInProcess, LleFlatteningRefusesWhatIsNotADisk) {
   const TriMesh sphere = test::icosphere(3);
   MeshModel* mm = addMesh(doc, sphere.positions, sphere.triangles);

@@ -151,10 +151,21 @@ TEST(GeodesicLle, RefusesWhatIsNotADiskAndBadCounts) {
   };
   EXPECT_TRUE(refused(test::icosphere(2), {}));     // closed: no boundary loop
   EXPECT_TRUE(refused(test::cylinder(16, 4), {}));  // two boundary loops
-  const TriMesh grid = test::planeGrid(10);         // 121 vertices
-  EXPECT_TRUE(refused(grid, params(200, 8)));       // B > V
-  EXPECT_TRUE(refused(grid, params(20, 2)));        // K < 3
-  EXPECT_TRUE(refused(grid, params(20, 20)));       // K >= B
+  {                                                 // a planar rectangle with a square hole cut out
+    const TriMesh full = test::planeGrid(20);
+    std::vector<Tri> kept;
+    for (int f = 0; f < full.faceCount(); ++f) {
+      const Vec3 c = (full.positions[full.triangles[f][0]] + full.positions[full.triangles[f][1]] +
+                      full.positions[full.triangles[f][2]]) /
+                     3.0;
+      if (std::abs(c.x() - 0.5) > 0.15 || std::abs(c.y() - 0.5) > 0.15) kept.push_back(full.triangles[f]);
+    }
+    EXPECT_TRUE(refused(*buildTriMesh(full.positions, kept), {}));
+  }
+  const TriMesh grid = test::planeGrid(10);    // 121 vertices
+  EXPECT_TRUE(refused(grid, params(200, 8)));  // B > V
+  EXPECT_TRUE(refused(grid, params(20, 2)));   // K < 3
+  EXPECT_TRUE(refused(grid, params(20, 20)));  // K >= B
   TriMesh nan = grid;
   nan.positions[5].x() = NAN;
   EXPECT_TRUE(refused(nan, {}));

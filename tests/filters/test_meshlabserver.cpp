@@ -450,33 +450,17 @@ TEST(MeshlabserverBadInput, NanCoordinates) {
                       "fast_marching_vertex0.mlx", "non-finite coordinate"});
 }
 
-// Texture atlas through meshlabserver: resources/texture_atlas.mlx on a copy of fandisk, saved as
-// OBJ with wedge texture coordinates (-m wt). The OBJ's UV triangles judged by the atlas oracle
-// (no flip, no overlap, all in the unit square), and its material names the checkerboard PNG,
-// which exists.
-TEST(Meshlabserver, TextureAtlasOfFandiskAsObjMtlPng) {
-  const std::string in = kOut + "fandisk_for_atlas.off", out = kOut + "fandisk_atlas.obj";
-  {
-    std::ifstream src(test::meshPath("fandisk.off"), std::ios::binary);
-    std::ofstream dst(in, std::ios::binary);
-    dst << src.rdbuf();
-  }
-  std::remove(out.c_str());
-  const ServerRun run =
-      meshlabserver("-i '" + in + "' -o '" + out + "' -m wt -s '" + kResources + "texture_atlas.mlx'");
-  ASSERT_EQ(run.exitCode, 0) << run.output;
-  EXPECT_NE(run.output.find("charts"), std::string::npos) << run.output;
-  EXPECT_NE(run.output.find("Time:"), std::string::npos);
-  std::ifstream obj(out);
-  ASSERT_TRUE(obj.good());
+/// The UV triangles of an OBJ written with -m wt (v/vt faces), and its mtllib name.
+std::vector<std::array<Eigen::Vector2d, 3>> readObjUvTriangles(const std::string& path, std::string* mtl) {
+  std::ifstream obj(path);
   std::vector<Eigen::Vector2d> vt;
   std::vector<std::array<Eigen::Vector2d, 3>> triangles;
-  std::string line, mtl;
+  std::string line;
   while (std::getline(obj, line)) {
     std::istringstream ss(line);
     std::string key;
     ss >> key;
-    if (key == "mtllib") ss >> mtl;
+    if (key == "mtllib" && mtl) ss >> *mtl;
     if (key == "vt") {
       double u = 0, v = 0;
       ss >> u >> v;
@@ -488,12 +472,38 @@ TEST(Meshlabserver, TextureAtlasOfFandiskAsObjMtlPng) {
         std::string ref;
         ss >> ref;
         const size_t slash = ref.find('/');
-        ASSERT_NE(slash, std::string::npos) << "a face without texture coordinates: " << line;
+        if (slash == std::string::npos) return {};  // a face without texture coordinates
         corner = vt.at(std::stoi(ref.substr(slash + 1)) - 1);
       }
       triangles.push_back(t);
     }
   }
+  return triangles;
+}
+
+/// A copy of a data-set mesh in the output folder (the atlas writes its texture next to its input).
+std::string copyToOutput(const std::string& name) {
+  const std::string copy = kOut + "for_uv_" + name;
+  std::ifstream src(test::meshPath(name), std::ios::binary);
+  std::ofstream dst(copy, std::ios::binary);
+  dst << src.rdbuf();
+  return copy;
+}
+
+// Texture atlas through meshlabserver: resources/texture_atlas.mlx on a copy of fandisk, saved as
+// OBJ with wedge texture coordinates (-m wt). The OBJ's UV triangles judged by the atlas oracle
+// (no flip, no overlap, all in the unit square), and its material names the checkerboard PNG,
+// which exists.
+TEST(Meshlabserver, TextureAtlasOfFandiskAsObjMtlPng) {
+  const std::string in = copyToOutput("fandisk.off"), out = kOut + "fandisk_atlas.obj";
+  std::remove(out.c_str());
+  const ServerRun run =
+      meshlabserver("-i '" + in + "' -o '" + out + "' -m wt -s '" + kResources + "texture_atlas.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("charts"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("Time:"), std::string::npos);
+  std::string mtl, line;
+  const std::vector<std::array<Eigen::Vector2d, 3>> triangles = readObjUvTriangles(out, &mtl);
   ASSERT_EQ(triangles.size(), 12946u);  // fandisk's faces, all with UVs
   const oracle::UvAtlasCheck c = oracle::checkUvAtlas(triangles);
   EXPECT_EQ(c.flipped, 0);
@@ -507,6 +517,32 @@ TEST(Meshlabserver, TextureAtlasOfFandiskAsObjMtlPng) {
     if (line.rfind("map_Kd", 0) == 0) texture = line.substr(7);
   ASSERT_FALSE(texture.empty()) << "no map_Kd in " << mtl;
   EXPECT_TRUE(std::ifstream(texture[0] == '/' ? texture : kOut + texture).good()) << texture;
+}
+
+// Geodesic LLE flattening through meshlabserver: resources/lle_flattening.mlx on nefertiti.off (a
+// disk), saved as OBJ with wedge texture coordinates; judged by the atlas oracle once brought into
+// the unit square by one scale and shift (the flattening is not packed).
+TEST(Meshlabserver, LleFlatteningOfNefertitiHasNoFoldOrOverlap) {
+  const std::string out = kOut + "nefertiti_lle.obj";
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + copyToOutput("nefertiti.off") + "' -o '" + out + "' -m wt -s '" +
+                                      kResources + "lle_flattening.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("Geodesic LLE flattening"), std::string::npos) << run.output;
+  std::vector<std::array<Eigen::Vector2d, 3>> triangles = readObjUvTriangles(out, nullptr);
+  ASSERT_EQ(triangles.size(), 562u);
+  Eigen::Vector2d lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+  for (const auto& t : triangles)
+    for (const auto& q : t) {
+      lo = lo.cwiseMin(q);
+      hi = hi.cwiseMax(q);
+    }
+  for (auto& t : triangles)
+    for (auto& q : t) q = (q - lo) / (hi - lo).maxCoeff();
+  const oracle::UvAtlasCheck c = oracle::checkUvAtlas(triangles);
+  EXPECT_EQ(c.flipped, 0);
+  EXPECT_EQ(c.zeroArea, 0);
+  EXPECT_EQ(c.overlaps, 0);
 }
 
 }  // namespace

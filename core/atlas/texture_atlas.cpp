@@ -1,8 +1,12 @@
 #include "core/atlas/texture_atlas.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <new>
 #include <string>
+#include <system_error>
+#include <thread>
 
 #include <Eigen/Geometry>
 
@@ -94,6 +98,55 @@ Expected<std::vector<Piece>> regionPieces(const TriMesh& mesh, const std::vector
     const auto uv = layoutTriangle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], side);
     pieces.push_back({{f}, {uv[0], uv[1], uv[2]}});
   }
+  return pieces;
+}
+
+/// Every region's pieces, the regions shared out over the cores (they are independent; each
+/// thread has its own scratch). Progress is reported, and cancellation read, by the calling
+/// thread only. The result does not depend on the number of threads.
+Expected<std::vector<Piece>> flattenRegions(const TriMesh& mesh, const std::vector<std::vector<int>>& facesOf,
+                                            const LleFlatteningParams& params, std::vector<AtlasChart>& charts,
+                                            Progress& progress) {
+  const int regions = static_cast<int>(facesOf.size());
+  std::vector<std::vector<Piece>> piecesOf(regions);
+  std::vector<Status> statusOf(regions);
+  std::atomic<int> next{0}, done{0};
+  std::atomic<bool> stop{false};
+  const auto work = [&](bool reports) {
+    std::vector<int> localOf(mesh.vertexCount(), -1);
+    for (int c = next++; c < regions && !stop; c = next++) {
+      try {
+        Expected<std::vector<Piece>> more = regionPieces(mesh, facesOf[c], params, localOf, charts[c], Progress());
+        if (more)
+          piecesOf[c] = std::move(*more);
+        else
+          statusOf[c] = more.status();
+      } catch (const std::bad_alloc&) {
+        statusOf[c] = outOfMemory();
+      }
+      if (!statusOf[c]) stop = true;
+      ++done;
+      if (reports && !progress.report(0.5 + 0.45 * done / regions, "Texture atlas: flattening the charts")) stop = true;
+    }
+  };
+  std::vector<std::thread> helpers;
+  try {
+    for (unsigned i = 1; i < std::min<unsigned>(std::thread::hardware_concurrency(), regions); ++i)
+      helpers.emplace_back(work, false);
+  } catch (const std::system_error&) {
+    // No more threads to be had: the ones started and this one share the regions.
+  }
+  work(true);
+  for (std::thread& t : helpers) t.join();
+  std::vector<Piece> pieces;
+  for (int c = 0; c < regions; ++c) {
+    if (!statusOf[c]) return statusOf[c];
+    for (Piece& piece : piecesOf[c]) {
+      piece.chart = c;
+      pieces.push_back(std::move(piece));
+    }
+  }
+  if (stop) return cancelled();
   return pieces;
 }
 
@@ -261,18 +314,9 @@ Expected<AtlasResult> buildTextureAtlas(const TriMesh& mesh, const AtlasParams& 
   std::vector<std::vector<int>> facesOf(r.segmentation.regions);
   for (int f = 0; f < mesh.faceCount(); ++f) facesOf[r.faceChart[f]].push_back(f);
   r.charts.resize(facesOf.size());
-  std::vector<Piece> pieces;
-  std::vector<int> localOf(mesh.vertexCount(), -1);
-  for (size_t c = 0; c < facesOf.size(); ++c) {
-    if (!progress.report(0.5 + 0.45 * c / facesOf.size(), "Texture atlas: flattening the charts")) return cancelled();
-    Expected<std::vector<Piece>> more =
-        regionPieces(mesh, facesOf[c], params.flattening, localOf, r.charts[c], Progress());
-    if (!more) return more.status();
-    for (Piece& piece : *more) {
-      piece.chart = static_cast<int>(c);
-      pieces.push_back(std::move(piece));
-    }
-  }
+  Expected<std::vector<Piece>> flattened = flattenRegions(mesh, facesOf, params.flattening, r.charts, progress);
+  if (!flattened) return flattened.status();
+  std::vector<Piece> pieces = std::move(*flattened);
   if (!progress.report(0.95, "Texture atlas: packing")) return cancelled();
   r.cornerUv.assign(3 * mesh.faceCount(), Vec2::Zero());
   if (Status s = packPieces(pieces, params, r); !s) return s;

@@ -12,7 +12,7 @@
 // Guarantees: every chart's map is one-to-one (checkUvInjectivity: positive triangles, no
 // branch point, a simple boundary), charts lie in disjoint rectangles at least 2 gutters apart,
 // all UVs in [0, 1]^2. Cost: the segmentation, plus per chart B fronts over its V_c vertices
-// (geodesic_lle.h), plus the packing.
+// (geodesic_lle.h; the charts run on all cores, with the same output), plus the packing.
 #pragma once
 
 #include <vector>

@@ -115,8 +115,6 @@ Status applyTextureAtlas(MeshDocument& doc, const RichParameterList& params, Fil
   p.flattening.neighbours = params.getInt(param::kNeighbours);
   p.textureSize = params.getInt(param::kTextureSize);
   p.gutter = params.getInt(param::kGutter);
-  if (p.flattening.basePoints < 4 || p.flattening.neighbours < 3 || p.flattening.neighbours >= p.flattening.basePoints)
-    return invalidInput("Base points must be >= 4 and Neighbours between 3 and Base points - 1");
   Expected<AtlasResult> r = buildTextureAtlas(current->view.mesh, p, ctx.progress);
   if (!r) return r.status();
   MeshModel& mm = *current->model;  // commit

@@ -218,6 +218,8 @@ Status checkAtlasParams(const TriMesh& mesh, const AtlasParams& p) {
   if (p.textureSize < 16) return invalidInput("texture atlas: TextureSize must be at least 16 texels");
   if (p.gutter < 0) return invalidInput("texture atlas: Gutter must be >= 0 texels");
   if (2 * p.gutter >= p.textureSize) return invalidInput("texture atlas: the Gutter leaves no room in the texture");
+  if (p.flattening.basePoints < 4 || p.flattening.neighbours < 3 || p.flattening.neighbours >= p.flattening.basePoints)
+    return invalidInput("texture atlas: Base points must be >= 4 and Neighbours between 3 and Base points - 1");
   if (mesh.topology.inconsistentEdges > 0)
     return invalidInput("texture atlas: the faces are not coherently oriented (" +
                         std::to_string(mesh.topology.inconsistentEdges) +
@@ -230,29 +232,27 @@ Status checkAtlasParams(const TriMesh& mesh, const AtlasParams& p) {
   return Status::ok();
 }
 
-/// Whether a chart's map fills at least kMinimumFill of its minimal bounding rectangle: a
-/// one-to-one map can still be a long thin spiral or have a spike that makes its rectangle huge,
-/// and packing then shrinks every other chart to nothing.
+/// A one-to-one map can still be useless in an atlas: a long thin spiral or a spike that makes
+/// its bounding rectangle huge (packing then shrinks every other chart to nothing), or a needle
+/// (a chart of 12 faces on cactus.off, 96 long and 0.0002 wide). A chart's map must fill at least
+/// kMinimumFill of its minimal rectangle and have an L2 stretch (at its own area scale) of at
+/// most kMaxChartStretch; else it is mapped again, or laid out by faces.
 constexpr double kMinimumFill = 0.05;
-bool compact(const TriMesh& patch, const std::vector<Vec2>& uv) {
-  std::vector<Vec2> points = uv;
-  const ChartRectangle r = alignToMinimalRectangle(points);
-  double area = 0.0;
-  for (const Tri& t : patch.triangles) {
-    const Vec2 a = uv[t[1]] - uv[t[0]], b = uv[t[2]] - uv[t[0]];
-    area += 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
-  }
-  return area >= kMinimumFill * r.width * r.height;
-}
-
-/// Whether a chart's L2 stretch (at its own area scale) is above kMaxChartStretch: a one-to-one
-/// map can squash a chart into a needle (a chart of 12 faces on cactus.off, 96 long and 0.0002
-/// wide), which then takes the whole texture. Such a chart is mapped again, or laid out by faces.
 constexpr double kMaxChartStretch = 4.0;
-bool stretched(const TriMesh& patch, const std::vector<Vec2>& uv) {
+
+/// If `uv` is fit for the atlas (one-to-one, compact, not stretched), scales it so that its area
+/// is the chart's 3D area (the atlas's one texel density) and returns true.
+bool fitForAtlas(const TriMesh& patch, std::vector<Vec2>& uv) {
+  if (!checkUvInjectivity(patch, uv).injective()) return false;
   std::vector<Vec2> cornerUv(3 * patch.faceCount());
   for (int c = 0; c < 3 * patch.faceCount(); ++c) cornerUv[c] = uv[patch.vertex(c)];
-  return !(measureUvDistortion(patch, cornerUv).stretchL2 <= kMaxChartStretch);
+  const UvDistortion d = measureUvDistortion(patch, cornerUv);
+  std::vector<Vec2> points = uv;
+  const ChartRectangle r = alignToMinimalRectangle(points);
+  if (!(d.areaUv >= kMinimumFill * r.width * r.height) || !(d.stretchL2 <= kMaxChartStretch)) return false;
+  if (d.area3d > 0.0 && d.areaUv > 0.0)
+    for (Vec2& q : uv) q *= std::sqrt(d.area3d / d.areaUv);
+  return true;
 }
 
 }  // namespace
@@ -260,17 +260,7 @@ bool stretched(const TriMesh& patch, const std::vector<Vec2>& uv) {
 Expected<ChartMap> flattenChart(const TriMesh& patch, const LleFlatteningParams& params, Progress progress) {
   ChartMap map;
   const auto accept = [&](std::vector<Vec2> uv) {
-    if (!checkUvInjectivity(patch, uv).injective() || !compact(patch, uv) || stretched(patch, uv)) return false;
-    double area3 = 0.0, areaUv = 0.0;  // one scale: UV area = 3D area (the atlas's texel density)
-    for (const Tri& t : patch.triangles) {
-      area3 +=
-          0.5 *
-          (patch.positions[t[1]] - patch.positions[t[0]]).cross(patch.positions[t[2]] - patch.positions[t[0]]).norm();
-      const Vec2 a = uv[t[1]] - uv[t[0]], b = uv[t[2]] - uv[t[0]];
-      areaUv += 0.5 * (a.x() * b.y() - a.y() * b.x());
-    }
-    if (area3 > 0.0 && areaUv > 0.0)
-      for (Vec2& q : uv) q *= std::sqrt(area3 / areaUv);
+    if (!fitForAtlas(patch, uv)) return false;
     map.uv = std::move(uv);
     return true;
   };

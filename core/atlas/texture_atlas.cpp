@@ -10,6 +10,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/flatten/arap_relaxation.h"
+
 namespace gr {
 namespace {
 
@@ -288,7 +290,13 @@ Expected<ChartMap> flattenChart(const TriMesh& patch, const LleFlatteningParams&
     p.boundary = LleBoundary::Circle;
     Expected<LleFlatteningResult> r = flattenGeodesicLle(patch, p, progress);
     map.tutte = true;
-    if (r && accept(std::move(r->uv))) return map;
+    if (r) {  // relaxed from the circle (ARAP), else the circle itself
+      std::vector<Vec2> uv = r->uv;
+      ArapParams arap;
+      arap.rounds = p.arapRounds;
+      if (relaxAsRigidAsPossible(patch, uv, arap) && accept(std::move(uv))) return map;
+      if (accept(std::move(r->uv))) return map;
+    }
   }
   map.uv.clear();
   return map;

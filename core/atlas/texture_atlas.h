@@ -2,8 +2,9 @@
 // square (Peyré & Cohen 2006, §4.2-4.3 and §5: segmentation, then flattening per region).
 //
 //   mesh --segmentSurface (geodesic centroidal tessellation, boundaries on sharp edges)--> regions
-//        --per region: its faces as a patch, flattenChart (geodesic LLE + Nyström; Tutte's
-//          embedding when LLE folds; the faces laid out one by one when even that fails)--> UVs
+//        --per region: its faces as a patch, flattenChart (geodesic LLE + Nyström, relaxed by
+//          ARAP; Tutte's embedding, relaxed likewise, when LLE folds; the faces laid out one by one
+//          when even that fails)--> UVs
 //        --per chart: scaled so that UV area / 3D area is the same for all (one texel density),
 //          turned to its minimal bounding rectangle (chart_packing.h)--> rectangles
 //        --packCharts, a gutter of `gutter` texels at `textureSize`--> UVs in [0, 1]^2
@@ -28,11 +29,11 @@
 namespace gr {
 
 struct AtlasParams {
-  /// Regions and Lloyd iterations of the segmentation (60 regions, 10 iterations; feature
+  /// Regions and Lloyd iterations of the segmentation (30 regions, 10 iterations; feature
   /// alignment as the segmentation's default, so that charts end at sharp edges).
   SegmentationParams segmentation = [] {
     SegmentationParams p;
-    p.regions = 60;
+    p.regions = 30;
     p.lloyd.iterations = 10;
     return p;
   }();
@@ -68,7 +69,8 @@ Expected<AtlasResult> buildTextureAtlas(const TriMesh& mesh, const AtlasParams& 
 
 /// One chart's map: `patch` (a topological disk) flattened by geodesic LLE with B and K capped to
 /// its size, checked with checkUvInjectivity, compact (>= 5% of its bounding rectangle) and with an
-/// L2 stretch <= 4, else Tutte's embedding with the same checks; UV area = 3D area,
+/// L2 stretch <= 4, else Tutte's embedding with the same checks (each relaxed by ARAP first,
+/// arap_relaxation.h, and taken as it was if the relaxed map fails them); UV area = 3D area,
 /// counter-clockwise. Empty uv if neither passes (the caller lays the faces apart).
 struct ChartMap {
   std::vector<Vec2> uv;

@@ -1,4 +1,5 @@
 #include "core/flatten/geodesic_lle.h"
+#include "core/flatten/arap_relaxation.h"
 #include "core/flatten/uv_map_quality.h"
 
 #include <Eigen/Eigenvalues>
@@ -61,6 +62,7 @@ Status checkPatch(const TriMesh& patch, const LleFlatteningParams& p) {
                         std::to_string(p.neighbours) + ", B = " + std::to_string(p.basePoints) + ")");
   if (!(p.regularisation >= 0.0) || !std::isfinite(p.regularisation))
     return invalidInput("LLE flattening: the regulariser must be finite and >= 0");
+  if (p.arapRounds < 0) return invalidInput("LLE flattening: ARAP rounds must be >= 0");
   return Status::ok();
 }
 
@@ -407,6 +409,20 @@ void matchArea(const TriMesh& patch, std::vector<Vec2>& uv) {
   for (Vec2& q : uv) q *= s;
 }
 
+/// The map after params.arapRounds of ARAP relaxation (one-to-one kept; a map the relaxation
+/// refuses, which a one-to-one map is not, is returned as it was).
+Expected<LleFlatteningResult> relaxed(const TriMesh& patch, const LleFlatteningParams& params, LleFlatteningResult r) {
+  if (params.arapRounds <= 0) return r;
+  ArapParams arap;
+  arap.rounds = params.arapRounds;
+  std::vector<Vec2> uv = r.uv;
+  Expected<ArapResult> a = relaxAsRigidAsPossible(patch, uv, arap);
+  if (!a) return a.status().code == StatusCode::InvalidInput ? Expected<LleFlatteningResult>(std::move(r)) : a.status();
+  r.uv = std::move(uv);
+  r.arapRounds = a->rounds;
+  return r;
+}
+
 }  // namespace
 
 std::vector<double> uvSignedAreas(const TriMesh& mesh, const std::vector<Vec2>& uv) {
@@ -437,7 +453,7 @@ Expected<LleFlatteningResult> flattenGeodesicLle(const TriMesh& patch, const Lle
     // No fold left; the boundary may still run over itself (a free boundary bends freely).
     if (unfolded && checkUvInjectivity(patch, r.uv).injective()) {
       if (!r.metricCorrected) matchArea(patch, r.uv);
-      return r;
+      return relaxed(patch, params, std::move(r));
     }
   }
   Expected<std::vector<Vec2>> tutte = tutteEmbedding(patch);
@@ -446,7 +462,8 @@ Expected<LleFlatteningResult> flattenGeodesicLle(const TriMesh& patch, const Lle
   r.tutte = true;
   foldedFaces(patch, r.uv);  // orientation as the patch's
   matchArea(patch, r.uv);
-  return r;
+  if (params.boundary == LleBoundary::Circle) return r;
+  return relaxed(patch, params, std::move(r));
 }
 
 }  // namespace gr

@@ -28,8 +28,8 @@ constexpr int kHalvings = 6;
 /// A face in its own plane: the half cotangent weight of each edge (the edge opposite corner k)
 /// and the edge vectors x_i - x_j in an isometric 2D frame.
 struct FlatFace {
-  std::array<double, 3> weight{};     // of the edge (k+1, k+2)
-  std::array<Vec2, 3> edge;           // x_{k+1} - x_{k+2}
+  std::array<double, 3> weight{};  // of the edge (k+1, k+2)
+  std::array<Vec2, 3> edge;        // x_{k+1} - x_{k+2}
 };
 
 double faceArea(const TriMesh& patch, int f) {
@@ -70,11 +70,14 @@ double localStep(const TriMesh& patch, const std::vector<FlatFace>& faces, const
     Eigen::Matrix2d s = Eigen::Matrix2d::Zero();
     for (int k = 0; k < 3; ++k)
       s += faces[f].weight[k] * (uv[t[(k + 1) % 3]] - uv[t[(k + 2) % 3]]) * faces[f].edge[k].transpose();
-    const double angle = std::atan2(s(1, 0) - s(0, 1), s(0, 0) + s(1, 1));  // maximises tr(R^T S)
-    rotation[f] << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+    // The rotation maximising tr(R^T S): (cos, sin) along (s00 + s11, s10 - s01).
+    const Vec2 cs(s(0, 0) + s(1, 1), s(1, 0) - s(0, 1));
+    const double norm = cs.norm();
+    const Vec2 unit = norm > 0.0 ? Vec2(cs / norm) : Vec2(1.0, 0.0);
+    rotation[f] << unit.x(), -unit.y(), unit.y(), unit.x();
     for (int k = 0; k < 3; ++k)
-      energy += faces[f].weight[k] *
-                (uv[t[(k + 1) % 3]] - uv[t[(k + 2) % 3]] - rotation[f] * faces[f].edge[k]).squaredNorm();
+      energy +=
+          faces[f].weight[k] * (uv[t[(k + 1) % 3]] - uv[t[(k + 2) % 3]] - rotation[f] * faces[f].edge[k]).squaredNorm();
   }
   return energy;
 }
@@ -142,7 +145,8 @@ Status factorise(const TriMesh& patch, const std::vector<FlatFace>& faces, Syste
   Eigen::SparseMatrix<double> l(n, n);
   l.setFromTriplets(entries.begin(), entries.end());
   system.solver.compute(l);
-  if (system.solver.info() != Eigen::Success) return internalError("ARAP relaxation: the Laplacian could not be factorised");
+  if (system.solver.info() != Eigen::Success)
+    return internalError("ARAP relaxation: the Laplacian could not be factorised");
   return {};
 }
 
@@ -171,7 +175,7 @@ bool injectiveStep(const TriMesh& patch, const std::vector<Vec2>& uv, const std:
   double t = maxStep(patch, uv, target);
   for (int h = 0; h <= kHalvings && t > 0.0; ++h, t *= 0.5) {
     for (size_t v = 0; v < uv.size(); ++v) out[v] = uv[v] + t * (target[v] - uv[v]);
-    if (checkUvInjectivity(patch, out).injective()) return true;
+    if (checkUvAlongPositivePath(patch, out).injective()) return true;  // every face positive on the way
   }
   return false;
 }
@@ -182,8 +186,10 @@ Expected<ArapResult> relaxAsRigidAsPossible(const TriMesh& patch, std::vector<Ve
   if (uv.size() != static_cast<size_t>(patch.vertexCount()))
     return invalidInput("ARAP relaxation: " + std::to_string(uv.size()) + " UVs for " +
                         std::to_string(patch.vertexCount()) + " vertices");
-  if (params.rounds < 0 || !(params.tolerance >= 0.0)) return invalidInput("ARAP relaxation: rounds < 0 or tolerance < 0");
-  if (!checkUvInjectivity(patch, uv).injective()) return invalidInput("ARAP relaxation: the map given is not one-to-one");
+  if (params.rounds < 0 || !(params.tolerance >= 0.0))
+    return invalidInput("ARAP relaxation: rounds < 0 or tolerance < 0");
+  if (!checkUvInjectivity(patch, uv).injective())
+    return invalidInput("ARAP relaxation: the map given is not one-to-one");
   ArapResult r;
   std::vector<Vec2> current = uv;
   scaleToPatch(patch, current);

@@ -7,7 +7,8 @@
 //       boundary free --> a target map u*
 //     --line search: the largest step t <= 1 from uv towards u* at which no face turns over
 //       (each face's signed area is a quadratic in t), times 0.8, then halved until the map is
-//       one-to-one (uv_map_quality.h: no fold, no branch point, a simple boundary) --> uv
+//       one-to-one (checkUvAlongPositivePath: every face stayed positive on the way, so only the
+//       boundary can have run over itself) --> uv
 //     --again, while the ARAP energy sum_f A_f |J_f - R_f|^2 drops by more than `tolerance` of it
 //
 // Why: the geodesic LLE map and Tutte's fallback are one-to-one but not isometric where the chart
@@ -34,7 +35,7 @@ struct ArapParams {
 };
 
 struct ArapResult {
-  int rounds = 0;            ///< rounds that moved the map
+  int rounds = 0;             ///< rounds that moved the map
   double energyBefore = 0.0;  ///< ARAP energy of the map given (after scaling it to the patch's area)
   double energyAfter = 0.0;   ///< and of the map returned (the lowest met)
 };

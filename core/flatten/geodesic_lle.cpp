@@ -83,21 +83,77 @@ Eigen::VectorXd lleWeights(const Eigen::VectorXd& toPoint, const Eigen::MatrixXd
   return w / sum;
 }
 
-/// The K entries of `row` (excluding `self`) with the smallest values.
-std::vector<int> nearest(const std::vector<double>& row, int k, int self) {
-  std::vector<int> order(row.size());
-  std::iota(order.begin(), order.end(), 0);
-  if (self >= 0) order.erase(order.begin() + self);
-  std::partial_sort(order.begin(), order.begin() + k, order.end(), [&](int a, int b) { return row[a] < row[b]; });
-  order.resize(k);
-  return order;
-}
-
+/// The fronts from the base points: per vertex, the bases that reached it; between the bases,
+/// their distances (where no front reached, the shortest path through the bases' own graph).
 struct BaseField {
-  std::vector<int> base;                  ///< base vertices
-  std::vector<std::vector<double>> dist;  ///< dist[j][v]: distance from base j to vertex v
+  std::vector<int> base;  ///< base vertices
+  /// The bases whose front reached vertex v: near[nearBegin[v] .. nearBegin[v + 1]), (distance,
+  /// base j), its K nearest first and in order.
+  std::vector<int> nearBegin;
+  std::vector<std::pair<double, int>> near;
+  Eigen::MatrixXd between;  ///< between(i, j): from base j's front at base i (graph-completed)
 };
 
+/// Fronts stop at this many covering radii of the sampling (plane10k, B = 100: a third of the
+/// whole fronts' vertex visits). Inside the patch a vertex's K = 8 nearest bases lie within about
+/// 2.5 of them; near the patch's corners the radius must be larger, and the Gram matrices also
+/// need the distances between a vertex's neighbouring bases. A vertex that sees fewer than K + 1
+/// bases makes the radius double around it (below); a distance between bases that no front
+/// reached is the shortest path through the bases' own graph (at 3 covering radii such paths,
+/// longer than the geodesic, fold hundreds of faces; at 5 none on the tests' patches).
+constexpr double kFrontRadii = 5.0;
+
+/// The front from base j, up to `radius`: the vertices it reached, with their distances.
+Status baseFront(FastMarcher& marcher, int source, double radius, std::vector<std::pair<int, double>>& reached) {
+  marcher.reset();
+  if (Status s = marcher.addSource(source, 0); !s) return s;
+  FastMarchingParams limit;
+  limit.maxDistance = radius;
+  if (Status s = marcher.propagate(limit); !s) return s;
+  reached.clear();
+  for (int v : marcher.acceptedOrder()) reached.emplace_back(v, marcher.distance()[v]);
+  return {};
+}
+
+/// Vertices reached by fewer than `need` fronts.
+std::vector<int> underCovered(int vertices, const std::vector<std::vector<std::pair<int, double>>>& fronts, int need) {
+  std::vector<int> count(vertices, 0), lacking;
+  for (const auto& front : fronts)
+    for (const auto& [v, d] : front) ++count[v];
+  for (int v = 0; v < vertices; ++v)
+    if (count[v] < need) lacking.push_back(v);
+  return lacking;
+}
+
+/// Missing distances between bases: shortest paths through the known ones (Dijkstra per base).
+void completeBetween(Eigen::MatrixXd& between) {
+  const int nb = static_cast<int>(between.rows());
+  for (int i = 0; i < nb; ++i)
+    for (int j = 0; j < nb; ++j)  // symmetric: the smaller of the two fronts' values
+      between(i, j) = between(j, i) = std::min(between(i, j), between(j, i));
+  Eigen::MatrixXd complete = between;
+  for (int i = 0; i < nb; ++i) {
+    std::vector<double> d(nb, kUnreached);
+    std::vector<char> done(nb, 0);
+    d[i] = 0.0;
+    for (int step = 0; step < nb; ++step) {  // dense Dijkstra: O(B^2) per base
+      int u = -1;
+      for (int j = 0; j < nb; ++j)
+        if (!done[j] && (u < 0 || d[j] < d[u])) u = j;
+      if (u < 0 || !std::isfinite(d[u])) break;
+      done[u] = 1;
+      for (int j = 0; j < nb; ++j)
+        if (std::isfinite(between(u, j))) d[j] = std::min(d[j], d[u] + between(u, j));
+    }
+    for (int j = 0; j < nb; ++j)
+      if (!std::isfinite(between(i, j))) complete(i, j) = d[j];
+  }
+  between = std::move(complete);
+}
+
+/// B base points by farthest-point sampling; each base's front up to kFrontRadii covering radii,
+/// then, while some vertex is reached by fewer than K + 1 fronts, the radius doubles for the bases
+/// within it of those vertices (all fronts whole at last).
 Expected<BaseField> baseDistances(const TriMesh& patch, const LleFlatteningParams& p, Progress& progress) {
   BaseField f;
   FastMarcher marcher(patch, Metric::uniform());
@@ -108,15 +164,60 @@ Expected<BaseField> baseDistances(const TriMesh& patch, const LleFlatteningParam
   Expected<FpsResult> sampled = farthestPointSampling(marcher, fps, progress.sub(0.0, 0.1));
   if (!sampled) return sampled.status();
   f.base = sampled->samples;
-  f.dist.resize(f.base.size());
-  for (size_t j = 0; j < f.base.size(); ++j) {
-    if (!progress.report(0.1 + 0.6 * double(j) / f.base.size(), "Geodesic LLE: fronts")) return cancelled();
+  const int nb = static_cast<int>(f.base.size()), n = patch.vertexCount();
+  std::vector<std::vector<std::pair<int, double>>> fronts(nb);
+  std::vector<char> rerun(nb, 1);
+  double radius = kFrontRadii * sampled->coveringRadius;
+  for (int pass = 0;; ++pass) {
+    const bool whole = !(radius > 0.0) || radius >= 2.0 * sampled->coveringRadius * nb;  // beyond the diameter
+    for (int j = 0; j < nb; ++j) {
+      if (!rerun[j]) continue;
+      if (!progress.report(0.1 + 0.6 * double(j) / nb, "Geodesic LLE: fronts")) return cancelled();
+      if (Status s = baseFront(marcher, f.base[j], whole ? kUnreached : radius, fronts[j]); !s) return s;
+    }
+    const std::vector<int> lacking = underCovered(n, fronts, p.neighbours + 1);
+    if (lacking.empty() || whole) break;
+    radius *= 2.0;  // the bases within the new radius of the under-covered vertices go again
     marcher.reset();
-    if (Status s = marcher.addSource(f.base[j], 0); !s) return s;
-    if (Status s = marcher.propagate(); !s) return s;
-    f.dist[j] = marcher.distance();
+    for (int v : lacking)
+      if (Status s = marcher.addSource(v, 0); !s) return s;
+    FastMarchingParams limit;
+    limit.maxDistance = radius;
+    if (Status s = marcher.propagate(limit); !s) return s;
+    for (int j = 0; j < nb; ++j) rerun[j] = std::isfinite(marcher.distance()[f.base[j]]);
   }
+  std::vector<int> baseIndex(n, -1);
+  for (int j = 0; j < nb; ++j) baseIndex[f.base[j]] = j;
+  f.nearBegin.assign(n + 1, 0);
+  for (const auto& front : fronts)
+    for (const auto& [v, d] : front) ++f.nearBegin[v + 1];
+  std::partial_sum(f.nearBegin.begin(), f.nearBegin.end(), f.nearBegin.begin());
+  f.near.resize(f.nearBegin[n]);
+  std::vector<int> fill(f.nearBegin.begin(), f.nearBegin.end() - 1);
+  f.between = Eigen::MatrixXd::Constant(nb, nb, kUnreached);
+  for (int j = 0; j < nb; ++j)
+    for (const auto& [v, d] : fronts[j]) {
+      f.near[fill[v]++] = {d, j};
+      if (baseIndex[v] >= 0) f.between(baseIndex[v], j) = d;
+    }
+  for (int v = 0; v < n; ++v) {
+    const auto begin = f.near.begin() + f.nearBegin[v], end = f.near.begin() + f.nearBegin[v + 1];
+    std::partial_sort(begin, begin + std::min<std::ptrdiff_t>(p.neighbours, end - begin), end);
+  }
+  completeBetween(f.between);
   return f;
+}
+
+/// The K bases nearest to base i (graph-completed distances), nearest first.
+std::vector<int> nearestBases(const BaseField& f, int i, int k) {
+  std::vector<int> order(f.base.size());
+  std::iota(order.begin(), order.end(), 0);
+  order.erase(order.begin() + i);
+  k = std::min<int>(k, order.size());
+  std::partial_sort(order.begin(), order.begin() + k, order.end(),
+                    [&](int a, int b) { return f.between(i, a) < f.between(i, b); });
+  order.resize(k);
+  return order;
 }
 
 /// Stress majorisation of the bases' layout on their neighbour pairs (Jacobi form of SMACOF):
@@ -131,7 +232,7 @@ void relaxStress(const BaseField& f, const std::vector<std::pair<int, int>>& pai
     std::vector<int> count(nb, 0);
     for (const auto& [i, j] : pairs) {
       const Vec2 e = y[i] - y[j];
-      const double len = e.norm(), d = f.dist[j][f.base[i]];
+      const double len = e.norm(), d = f.between(i, j);
       if (!(len > 0.0)) continue;
       sum[i] += y[j] + (d / len) * e;
       sum[j] += y[i] - (d / len) * e;
@@ -149,14 +250,12 @@ std::vector<Vec2> embedBases(const BaseField& f, const LleFlatteningParams& p, b
   Eigen::MatrixXd iw = Eigen::MatrixXd::Identity(nb, nb);
   std::vector<std::pair<int, int>> pairs;
   for (int i = 0; i < nb; ++i) {
-    std::vector<double> row(nb);
-    for (int j = 0; j < nb; ++j) row[j] = f.dist[j][f.base[i]];
-    const std::vector<int> nn = nearest(row, k, i);
+    const std::vector<int> nn = nearestBases(f, i, k);
     Eigen::VectorXd toPoint(k);
     Eigen::MatrixXd between(k, k);
     for (int a = 0; a < k; ++a) {
-      toPoint[a] = row[nn[a]];
-      for (int b = 0; b < k; ++b) between(a, b) = f.dist[nn[a]][f.base[nn[b]]];
+      toPoint[a] = f.between(i, nn[a]);
+      for (int b = 0; b < k; ++b) between(a, b) = f.between(nn[b], nn[a]);
       pairs.push_back({i, nn[a]});
     }
     const Eigen::VectorXd w = lleWeights(toPoint, between, p.regularisation);
@@ -171,7 +270,7 @@ std::vector<Vec2> embedBases(const BaseField& f, const LleFlatteningParams& p, b
   for (size_t r = 0; r < pairs.size(); ++r) {
     const Vec2 e = y[pairs[r].first] - y[pairs[r].second];
     a.row(r) << e.x() * e.x(), 2.0 * e.x() * e.y(), e.y() * e.y();
-    const double d = f.dist[pairs[r].second][f.base[pairs[r].first]];
+    const double d = f.between(pairs[r].first, pairs[r].second);
     rhs[r] = d * d;
   }
   const Eigen::Vector3d s = a.colPivHouseholderQr().solve(rhs);
@@ -195,7 +294,6 @@ std::vector<Vec2> extend(const TriMesh& patch, const BaseField& f, const std::ve
   std::vector<int> baseIndex(patch.vertexCount(), -1);
   for (int j = 0; j < nb; ++j) baseIndex[f.base[j]] = j;
   std::vector<Vec2> uv(patch.vertexCount());
-  std::vector<double> row(nb);
   Eigen::VectorXd toPoint(k);
   Eigen::MatrixXd between(k, k);
   for (int v = 0; v < patch.vertexCount(); ++v) {
@@ -203,15 +301,14 @@ std::vector<Vec2> extend(const TriMesh& patch, const BaseField& f, const std::ve
       uv[v] = y[baseIndex[v]];
       continue;
     }
-    for (int j = 0; j < nb; ++j) row[j] = f.dist[j][v];
-    const std::vector<int> nn = nearest(row, k, -1);
+    const std::pair<double, int>* nn = f.near.data() + f.nearBegin[v];  // K of them (baseDistances)
     for (int a = 0; a < k; ++a) {
-      toPoint[a] = row[nn[a]];
-      for (int b = 0; b < k; ++b) between(a, b) = f.dist[nn[a]][f.base[nn[b]]];
+      toPoint[a] = nn[a].first;
+      for (int b = 0; b < k; ++b) between(a, b) = f.between(nn[b].second, nn[a].second);
     }
     const Eigen::VectorXd w = lleWeights(toPoint, between, p.extensionRegularisation);
     Vec2 q = Vec2::Zero();
-    for (int a = 0; a < k; ++a) q += w[a] * y[nn[a]];
+    for (int a = 0; a < k; ++a) q += w[a] * y[nn[a].second];
     uv[v] = q;
   }
   return uv;

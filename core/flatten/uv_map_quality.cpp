@@ -73,9 +73,7 @@ int boundaryCrossings(const std::vector<std::array<int, 2>>& edges, const std::v
   return crossings;
 }
 
-}  // namespace
-
-UvInjectivity checkUvInjectivity(const TriMesh& patch, const std::vector<Vec2>& uv) {
+UvInjectivity checkUv(const TriMesh& patch, const std::vector<Vec2>& uv, bool interiorWindings) {
   UvInjectivity r;
   double mean = 0.0;
   std::vector<double> area(patch.faceCount());
@@ -85,23 +83,32 @@ UvInjectivity checkUvInjectivity(const TriMesh& patch, const std::vector<Vec2>& 
     mean += std::abs(area[f]);
   }
   mean /= std::max(patch.faceCount(), 1);
+  const std::vector<char> onBoundary = boundaryVertexFlags(patch);
   std::vector<double> angleSum(patch.vertexCount(), 0.0);
   for (int f = 0; f < patch.faceCount(); ++f) {
     if (!(area[f] > 1e-12 * mean)) ++r.nonPositiveFaces;
     for (int k = 0; k < 3; ++k) {
       const Tri& t = patch.triangles[f];
+      if (!interiorWindings && !onBoundary[t[k]]) continue;
       const Vec2 a = uv[t[(k + 1) % 3]] - uv[t[k]], b = uv[t[(k + 2) % 3]] - uv[t[k]];
       angleSum[t[k]] += std::atan2(std::abs(cross2(a, b)), a.dot(b));
     }
   }
-  const std::vector<char> onBoundary = boundaryVertexFlags(patch);
   for (int v = 0; v < patch.vertexCount(); ++v) {
-    if (patch.valence(v) == 0) continue;
+    if (patch.valence(v) == 0 || (!interiorWindings && !onBoundary[v])) continue;
     const bool bad = onBoundary[v] ? angleSum[v] >= 2.0 * kPi - 1e-9 : std::abs(angleSum[v] - 2.0 * kPi) > 1e-6;
     r.windingVertices += bad;
   }
   r.boundaryCrossings = boundaryCrossings(boundaryEdges(patch), uv);
   return r;
+}
+
+}  // namespace
+
+UvInjectivity checkUvInjectivity(const TriMesh& patch, const std::vector<Vec2>& uv) { return checkUv(patch, uv, true); }
+
+UvInjectivity checkUvAlongPositivePath(const TriMesh& patch, const std::vector<Vec2>& uv) {
+  return checkUv(patch, uv, false);
 }
 
 UvDistortion measureUvDistortion(const TriMesh& mesh, const std::vector<Vec2>& cornerUv) {

@@ -35,6 +35,11 @@ struct UvInjectivity {
 /// The checks above for `patch` (a topological disk) mapped to `uv` (one per vertex).
 UvInjectivity checkUvInjectivity(const TriMesh& patch, const std::vector<Vec2>& uv);
 
+/// The same without the interior vertices' windings, for a map reached from a one-to-one map by a
+/// continuous path on which every face stays positive: an interior vertex's winding number is then
+/// an integer that varies continuously, so it stays 1; only the boundary can run over itself.
+UvInjectivity checkUvAlongPositivePath(const TriMesh& patch, const std::vector<Vec2>& uv);
+
 struct UvDistortion {
   double stretchL2 = 1.0;      ///< Sander's L2 stretch over the whole map (1 = isometry up to scale)
   double conformalMean = 1.0;  ///< area-weighted mean of G / g

@@ -138,8 +138,9 @@ void declareLleFlattening(const MeshModel& /*mesh*/, RichParameterList& params) 
                            QStringList() << "Free"
                                          << "Circle",
                            "Boundary",
-                           "Free: the LLE map's own boundary (repaired by Tutte's embedding if it folds). Circle: "
-                           "the boundary pinned to a circle (Tutte's embedding, always one-to-one)."));
+                           "Free: the LLE map's own boundary (repaired by Tutte's embedding if it folds), then "
+                           "relaxed as-rigid-as-possible, kept one-to-one. Circle: the boundary pinned to a circle "
+                           "(Tutte's embedding, always one-to-one, not relaxed)."));
   params.addParam(RichBool(param::kFlatLayer, false, "Flat layer",
                            "Also add a layer with the flattened mesh at z = 0, to look at the map."));
 }
@@ -177,7 +178,8 @@ Status applyLleFlattening(MeshDocument& doc, const RichParameterList& params, Fi
   ctx.log("Geodesic LLE flattening: " + std::to_string(r->basePoints.size()) + " base points; " +
           (r->tutte ? std::string("mapped by Tutte's embedding (") +
                           (p.boundary == LleBoundary::Circle ? "Circle boundary asked" : "LLE folded") + ")"
-                    : std::to_string(r->foldedBeforeRepair) + " folded triangles untangled"));
+                    : std::to_string(r->foldedBeforeRepair) + " folded triangles untangled") +
+          (r->arapRounds > 0 ? "; " + std::to_string(r->arapRounds) + " rounds of ARAP relaxation" : std::string()));
   ctx.log("Distortion: L2 stretch " + formatNumber(d.stretchL2) + ", conformal mean " + formatNumber(d.conformalMean) +
           "; vertex and wedge texture coordinates set" +
           (params.getBool(param::kFlatLayer) ? ", flat layer added" : ""));

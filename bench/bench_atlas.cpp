@@ -5,6 +5,11 @@
 //                           meshlabserver (xvfb-run, wall time of the whole process: start, plugin
 //                           loading, reading and writing included), regionNum = our chart count;
 //                           its atlas is a new layer, saved once the input layer is deleted.
+//   BlenderSmartUv/<mesh>   Blender 3.4's Smart UV Project with its defaults (system blender -b,
+//                           bench/blender_smart_uv.py): wall time of the whole process, and the
+//                           operator's own time as the counter `operator_s`; skipped when blender
+//                           is not installed. Its charts are counted on the output (faces joined
+//                           across an edge whose two ends keep their UVs).
 // Meshes: fandisk, bunny00, and bunny00 subdivided twice (1-to-4 midpoint, 602,690 vertices; one
 // iteration). Counters, for both, measured the same way on the output's per-corner UVs: charts,
 // L2 stretch and mean conformal distortion (gr::measureUvDistortion), packing (UV area / unit
@@ -162,19 +167,75 @@ bool readObj(const std::string& path, gr::TriMesh& mesh, std::vector<gr::Vec2>& 
   return true;
 }
 
+/// The case's mesh written to `path` as OFF (obj = false) or OBJ; false if it cannot be had.
+bool writeCaseMesh(benchmark::State& state, const Case& c, const std::string& path, bool obj) {
+  const gr::TriMesh* mesh = gr::bench::cachedMesh<gr::TriMesh>(state, c.name, c.file, c.subdivisions);
+  if (!mesh) return false;
+  std::ofstream out(path);
+  out.precision(17);
+  if (!obj) out << "OFF\n" << mesh->vertexCount() << " " << mesh->faceCount() << " 0\n";
+  for (const gr::Vec3& p : mesh->positions) out << (obj ? "v " : "") << p.x() << " " << p.y() << " " << p.z() << "\n";
+  for (const gr::Tri& t : mesh->triangles)
+    if (obj)
+      out << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+    else
+      out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  return static_cast<bool>(out);
+}
+
+/// UV charts of a per-corner map: faces joined across each edge whose two ends have the same UVs
+/// on both sides (union-find).
+int uvCharts(const gr::TriMesh& mesh, const std::vector<gr::Vec2>& cornerUv) {
+  std::vector<int> parent(mesh.faceCount());
+  for (int f = 0; f < mesh.faceCount(); ++f) parent[f] = f;
+  const auto root = [&](int f) {
+    while (parent[f] != f) f = parent[f] = parent[parent[f]];
+    return f;
+  };
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c) {
+    const int o = mesh.oppositeCorner[c];
+    if (o < 0) continue;
+    // Edge (next(c), prev(c)) is (prev(o), next(o)) in the other face.
+    if (cornerUv[gr::TriMesh::next(c)] == cornerUv[gr::TriMesh::prev(o)] &&
+        cornerUv[gr::TriMesh::prev(c)] == cornerUv[gr::TriMesh::next(o)])
+      parent[root(c / 3)] = root(o / 3);
+  }
+  int charts = 0;
+  for (int f = 0; f < mesh.faceCount(); ++f) charts += root(f) == f;
+  return charts;
+}
+
+void BM_BlenderSmartUv(benchmark::State& state, const Case& c) {
+  if (std::system("command -v blender > /dev/null 2>&1") != 0) return state.SkipWithError("blender not installed");
+  char dirTemplate[] = "/tmp/bench_atlas_XXXXXX";
+  if (!mkdtemp(dirTemplate)) return state.SkipWithError("mkdtemp failed");
+  const std::string dir = dirTemplate, input = dir + "/in.obj", out = dir + "/out.obj", log = dir + "/log.txt";
+  if (!writeCaseMesh(state, c, input, true)) return;
+  const std::string command = "blender -b --python '" + std::string(GR_BENCH_DIR) + "/blender_smart_uv.py' -- '" +
+                              input + "' '" + out + "' > '" + log + "' 2>&1";
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const int rc = std::system(command.c_str());
+    state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    if (rc != 0) return state.SkipWithError(("blender failed, see " + log).c_str());
+  }
+  std::ifstream logIn(log);
+  for (std::string word; logIn >> word;)
+    if (word == "SMART_UV_SECONDS") logIn >> state.counters["operator_s"];
+  gr::TriMesh mesh;
+  std::vector<gr::Vec2> cornerUv;
+  if (!readObj(out, mesh, cornerUv)) return state.SkipWithError(("cannot read " + out).c_str());
+  setUvCounters(state, mesh, cornerUv, uvCharts(mesh, cornerUv));
+}
+
 void BM_MeshLabVoronoiAtlas(benchmark::State& state, const Case& c) {
   char dirTemplate[] = "/tmp/bench_atlas_XXXXXX";
   if (!mkdtemp(dirTemplate)) return state.SkipWithError("mkdtemp failed");
   const std::string dir = dirTemplate, script = dir + "/va.mlx", out = dir + "/out.obj", log = dir + "/log.txt";
   std::string input = gr::bench::benchMeshPath(c.file);
   if (c.subdivisions > 0) {  // the same subdivided mesh as ours, written once
-    const gr::TriMesh* mesh = gr::bench::cachedMesh<gr::TriMesh>(state, c.name, c.file, c.subdivisions);
-    if (!mesh) return;
     input = dir + "/in.off";
-    std::ofstream off(input);
-    off << "OFF\n" << mesh->vertexCount() << " " << mesh->faceCount() << " 0\n";
-    for (const gr::Vec3& p : mesh->positions) off << p.x() << " " << p.y() << " " << p.z() << "\n";
-    for (const gr::Tri& t : mesh->triangles) off << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+    if (!writeCaseMesh(state, c, input, false)) return;
   }
   std::ofstream(script) << "<!DOCTYPE FilterScript>\n<FilterScript>\n"
                            " <filter name=\"Parametrization: Voronoi Atlas\">\n"
@@ -209,6 +270,11 @@ void registerAll() {
   }
   for (const Case& c : kCases)
     benchmark::RegisterBenchmark((std::string("MeshLabVoronoiAtlas/") + c.name).c_str(), BM_MeshLabVoronoiAtlas, c)
+        ->Unit(benchmark::kMillisecond)
+        ->UseManualTime()
+        ->Iterations(1);
+  for (const Case& c : kCases)
+    benchmark::RegisterBenchmark((std::string("BlenderSmartUv/") + c.name).c_str(), BM_BlenderSmartUv, c)
         ->Unit(benchmark::kMillisecond)
         ->UseManualTime()
         ->Iterations(1);

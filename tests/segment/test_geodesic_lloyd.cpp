@@ -126,11 +126,14 @@ TEST(GeodesicLloyd, CentreOfMassOfASphereCap) { expectCentreOfMass(sphereCap());
 TEST(GeodesicLloyd, CentreOfMassOfASaddlePatch) { expectCentreOfMass(saddlePatch()); }
 
 // Energy on bunny00 with 100 and 500 seeds: recomputed from a front of each iterate's seeds (the
-// seeds of a run of k iterations), it never increases. Issue 18 asks it to end at least 10% below
-// the farthest-point samples' energy: not reached. Lloyd converges next to the samples, at 92.9%
-// of their energy after 20 iterations (100 seeds; 93.0% without over-relaxation): the samples
-// already lie near a local minimum. Held at the measured figures after 8 iterations (93.7% and
-// 93.6% with the default descent, one unchecked step per cell), so that any change shows.
+// seeds of a run of k iterations), it never increases, and it ends within 4% of the lower bound
+// that no N points can beat: L. Fejes Toth's moment theorem (a plane domain of area A cut into N
+// cells has a second moment of at least N times the regular hexagon's, 5 sqrt(3) / 54 (A / N)^2;
+// on a surface this curved at this sampling, up to a percent or so). Issue 18 asks the energy to
+// end at least 10% below the farthest-point samples': out of reach, because the samples are only
+// 10.3% (100) and 9.6% (500) above that bound, so 10% below them is below the bound; Lloyd ends at
+// 2.5% above it after 40 iterations (92.9% and 93.5% of the samples'). Held at the measured figures
+// after 8 iterations (93.7% and 93.6%, with the default descent), so that any change shows.
 void expectEnergyFalls(int seedCount) {
   const TriMesh m = test::loadRealMesh("bunny00.off");
   ASSERT_GT(m.vertexCount(), 0);
@@ -161,10 +164,17 @@ void expectEnergyFalls(int seedCount) {
     previous = e;
   }
   EXPECT_LE(previous, 0.940 * start);
+  double area = 0.0;
+  for (const Tri& t : m.triangles)
+    area += 0.5 * (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]).norm();
+  const double hexagonBound = 5.0 * std::sqrt(3.0) / 54.0 * area * area / seedCount;
+  std::printf("%d seeds: samples %.3f x the hexagon bound, after %d iterations %.3f x\n", seedCount,
+              start / hexagonBound, kIterations, previous / hexagonBound);
+  EXPECT_LE(previous, 1.04 * hexagonBound);
 }
 
-TEST(GeodesicLloyd, EnergyNeverRisesAndFallsTenPercentBunny100) { expectEnergyFalls(100); }
-TEST(GeodesicLloyd, EnergyNeverRisesAndFallsTenPercentBunny500) { expectEnergyFalls(500); }
+TEST(GeodesicLloyd, EnergyNeverRisesAndEndsNearTheHexagonBoundBunny100) { expectEnergyFalls(100); }
+TEST(GeodesicLloyd, EnergyNeverRisesAndEndsNearTheHexagonBoundBunny500) { expectEnergyFalls(500); }
 
 TEST(GeodesicLloyd, RefusesBadInput) {
   const TriMesh m = test::planeGrid(4);

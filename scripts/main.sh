@@ -10,7 +10,9 @@
 #   resources/fast_marching_vertex0.mlx     -> cheese_geodesic.ply
 # and back on the mesh: resources/segmentation_50.mlx -> <mesh>_segmentation.ply (regions in face
 #   quality and colour), resources/texture_atlas.mlx -> <mesh>_atlas.obj (+ .mtl and the
-#   checkerboard <mesh>_geodesic_atlas.png: wedge texture coordinates of the geodesic atlas)
+#   checkerboard <mesh>_geodesic_atlas.png: wedge texture coordinates of the geodesic atlas), and
+#   the same atlas as <mesh>_atlas.ply for MeshLab; if Blender is installed, it opens the OBJ
+#   (scripts/blender_open_obj.py: faces, UV layers, texture)
 # and prints MeshLab's log of each run. The plugin is loaded from a staged prefix (build/stage),
 # not from /usr.
 set -euo pipefail
@@ -76,3 +78,11 @@ run "$root/resources/texture_atlas.mlx" "$root/output/${name}_atlas.obj" \
 # aborts on OBJ files, its own included).
 run "$root/resources/texture_atlas.mlx" "$root/output/${name}_atlas.ply" \
     "geodesic texture atlas as PLY with per-face texture coordinates, for MeshLab" "$atlas_input" "wt"
+# Blender (if installed; not needed otherwise) opens the atlas's OBJ + MTL + PNG.
+if command -v blender > /dev/null 2>&1; then
+  opened=$(blender -b --python "$root/scripts/blender_open_obj.py" -- "$root/output/${name}_atlas.obj" 2>&1 |
+    sed -n 's/^BLENDER_OPENED //p')
+  echo "== Blender 3.4 opens output/${name}_atlas.obj: ${opened:-FAILED}"
+else
+  echo "== Blender not installed: the check that it opens output/${name}_atlas.obj is skipped"
+fi

@@ -290,18 +290,23 @@ std::vector<Vec2> embedBases(const BaseField& f, const LleFlatteningParams& p, b
 /// fronts), applied to the bases' embedding.
 std::vector<Vec2> extend(const TriMesh& patch, const BaseField& f, const std::vector<Vec2>& y,
                          const LleFlatteningParams& p) {
-  const int nb = static_cast<int>(f.base.size()), k = p.neighbours;
+  const int nb = static_cast<int>(f.base.size());
   std::vector<int> baseIndex(patch.vertexCount(), -1);
   for (int j = 0; j < nb; ++j) baseIndex[f.base[j]] = j;
-  std::vector<Vec2> uv(patch.vertexCount());
-  Eigen::VectorXd toPoint(k);
-  Eigen::MatrixXd between(k, k);
+  std::vector<Vec2> uv(patch.vertexCount(), Vec2::Zero());
+  Eigen::VectorXd toPoint;
+  Eigen::MatrixXd between;
   for (int v = 0; v < patch.vertexCount(); ++v) {
     if (baseIndex[v] >= 0) {
       uv[v] = y[baseIndex[v]];
       continue;
     }
-    const std::pair<double, int>* nn = f.near.data() + f.nearBegin[v];  // K of them (baseDistances)
+    // K of them (baseDistances sees to it on a connected patch; fewer only if some were unreachable)
+    const int k = std::min(p.neighbours, f.nearBegin[v + 1] - f.nearBegin[v]);
+    if (k == 0) continue;
+    const std::pair<double, int>* nn = f.near.data() + f.nearBegin[v];
+    toPoint.resize(k);
+    between.resize(k, k);
     for (int a = 0; a < k; ++a) {
       toPoint[a] = nn[a].first;
       for (int b = 0; b < k; ++b) between(a, b) = f.between(nn[b].second, nn[a].second);

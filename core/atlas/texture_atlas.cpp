@@ -18,6 +18,8 @@ namespace {
 /// A small chart gets at most one base point per this many vertices (B = 100 on a chart of 120
 /// vertices makes nearly every vertex a base, and LLE on single edges folds).
 constexpr int kVerticesPerBase = 5;
+/// Rounds of splitting unsure pieces and packing again before the atlas is refused (Degenerate).
+constexpr int kSplitRounds = 2;
 
 /// A region's faces as a mesh of its own: local vertex i is input vertex inputVertex[i].
 struct Patch {
@@ -160,32 +162,65 @@ bool surelyCounterClockwise(const Vec2& a, const Vec2& b, const Vec2& c) {
   return left - right > bound;
 }
 
+/// How far apart, in the unit square, a chart's boundary edges must stay at the UVs written: far
+/// below a texel, far above float rounding (2^-24), so that no exact judge sees them cross.
+constexpr double kWrittenClearance = 1e-6;
+
+/// Whether the piece's boundary, at the UVs written, runs into itself or comes closer to itself
+/// than kWrittenClearance (a chart map whose boundary nearly touches itself, then rounded).
+bool boundaryTouches(const TriMesh& mesh, const Piece& piece, const std::vector<Vec2>& cornerUv,
+                     std::vector<int>& localOf) {
+  if (piece.faces.size() < 2) return false;
+  Expected<Patch> patch = extractPatch(mesh, piece.faces, localOf);
+  if (!patch) return true;
+  std::vector<Vec2> uv(patch->mesh.vertexCount(), Vec2::Zero());
+  for (size_t j = 0; j < piece.faces.size(); ++j)
+    for (int k = 0; k < 3; ++k) uv[patch->mesh.triangles[j][k]] = cornerUv[3 * piece.faces[j] + k];
+  return boundaryContacts(patch->mesh, uv, kWrittenClearance) > 0;
+}
+
 /// Pieces with a face that scaling and moving into the atlas left not surely counter-clockwise
-/// (a chart map with triangles near zero area): split into their faces, laid out one by one.
-/// Returns how many pieces were split.
+/// (a chart map with triangles near zero area), or whose boundary runs into itself at the UVs
+/// written: split into their faces, laid out one by one (a face already alone, thin, is laid out
+/// as an equilateral triangle of its longest side). Returns how many pieces were split.
 int splitUnsurePieces(const TriMesh& mesh, std::vector<Piece>& pieces, const std::vector<Vec2>& cornerUv,
                       std::vector<AtlasChart>& charts) {
   std::vector<Piece> kept;
+  std::vector<int> localOf(mesh.vertexCount(), -1);
   int split = 0;
   for (Piece& piece : pieces) {
     bool sure = true;
     for (int f : piece.faces)
       sure = sure && surelyCounterClockwise(cornerUv[3 * f], cornerUv[3 * f + 1], cornerUv[3 * f + 2]);
-    if (sure || piece.faces.size() == 1) {
+    sure = sure && !boundaryTouches(mesh, piece, cornerUv, localOf);
+    if (sure) {
       kept.push_back(std::move(piece));
       continue;
     }
     ++split;
     charts[piece.chart].facesApart = true;
+    const bool alone = piece.faces.size() == 1;  // a thin face laid out alone: made fat
     for (int f : piece.faces) {
       const Tri& t = mesh.triangles[f];
+      const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+      const double side = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
       const auto uv =
-          layoutTriangle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], mesh.meanEdgeLength());
+          alone ? std::array<Vec2, 3>{Vec2(0, 0), Vec2(side, 0), Vec2(0.5 * side, 0.5 * std::sqrt(3.0) * side)}
+                : layoutTriangle(a, b, c, mesh.meanEdgeLength());
       kept.push_back({{f}, {uv[0], uv[1], uv[2]}, piece.chart});
     }
   }
   pieces = std::move(kept);
   return split;
+}
+
+/// x rounded to the nearest float. Through a volatile float: GCC 12 folds double(float(x)) away
+/// where the result goes straight into an Eigen vector's constructor (measured: no conversion
+/// left in the object code, so the orientation checks judged unrounded UVs and MeshLab's floats
+/// could turn a thin triangle over).
+double roundedToFloat(double x) {
+  volatile float rounded = static_cast<float>(x);
+  return rounded;
 }
 
 /// Every piece turned to its minimal rectangle, packed; the UVs written per input corner.
@@ -205,7 +240,7 @@ Status packPieces(std::vector<Piece>& pieces, const AtlasParams& params, AtlasRe
                             .cwiseMin(Vec2::Ones());
         // Rounded to float, as MeshLab holds texture coordinates: the orientation checks below
         // judge what the mesh will carry.
-        r.cornerUv[3 * piece.faces[j] + k] = Vec2(double(float(uv.x())), double(float(uv.y())));
+        r.cornerUv[3 * piece.faces[j] + k] = Vec2(roundedToFloat(uv.x()), roundedToFloat(uv.y()));
       }
       const int f = piece.faces[j];
       const Vec2 a = r.cornerUv[3 * f + 1] - r.cornerUv[3 * f], b = r.cornerUv[3 * f + 2] - r.cornerUv[3 * f];
@@ -318,15 +353,14 @@ Expected<AtlasResult> buildTextureAtlas(const TriMesh& mesh, const AtlasParams& 
   if (!progress.report(0.95, "Texture atlas: packing")) return cancelled();
   r.cornerUv.assign(3 * mesh.faceCount(), Vec2::Zero());
   if (Status s = packPieces(pieces, params, r); !s) return s;
-  if (splitUnsurePieces(mesh, pieces, r.cornerUv, r.charts) > 0) {  // then packed again
+  // Unsure pieces split and everything packed again, until all are sure; a fat face alone can
+  // only stay unsure far below a texel: refused rather than shipped turned over.
+  for (int round = 0; splitUnsurePieces(mesh, pieces, r.cornerUv, r.charts) > 0; ++round) {
+    if (round == kSplitRounds)
+      return degenerate(
+          "texture atlas: a face is too small for the texture's precision even on its own; remove tiny "
+          "faces first (Filters > Cleaning and Repairing)");
     if (Status s = packPieces(pieces, params, r); !s) return s;
-    // A face laid out on its own is fat, so only a face far below a texel can still be unsure:
-    // refused rather than shipped turned over.
-    for (int f = 0; f < mesh.faceCount(); ++f)
-      if (!surelyCounterClockwise(r.cornerUv[3 * f], r.cornerUv[3 * f + 1], r.cornerUv[3 * f + 2]))
-        return degenerate("texture atlas: face " + std::to_string(f) +
-                          " is too small for the texture's precision even on its own; remove tiny faces first "
-                          "(Filters > Cleaning and Repairing)");
   }
   for (const AtlasChart& chart : r.charts)
     r.repairedCharts += chart.tutte || chart.facesApart || chart.foldedBeforeRepair > 0;

@@ -24,12 +24,15 @@ constexpr double kProximal = 1e-8;
 constexpr double kStepMargin = 0.8;
 /// Halvings of the step before a round that cannot stay one-to-one ends the relaxation.
 constexpr int kHalvings = 6;
+/// Boundary edges must keep this share of the mean edge length apart: a boundary that nearly
+/// touches itself crosses once the atlas rounds its UVs to float.
+constexpr double kBoundaryClearance = 1e-3;
 
 /// A face in its own plane: the half cotangent weight of each edge (the edge opposite corner k)
 /// and the edge vectors x_i - x_j in an isometric 2D frame.
 struct FlatFace {
-  std::array<double, 3> weight{};  // of the edge (k+1, k+2)
-  std::array<Vec2, 3> edge;        // x_{k+1} - x_{k+2}
+  std::array<double, 3> weight{};                                         // of the edge (k+1, k+2)
+  std::array<Vec2, 3> edge = {Vec2::Zero(), Vec2::Zero(), Vec2::Zero()};  // x_{k+1} - x_{k+2}
 };
 
 double faceArea(const TriMesh& patch, int f) {
@@ -170,12 +173,12 @@ std::vector<Vec2> globalStep(const TriMesh& patch, const std::vector<FlatFace>& 
 }
 
 /// A step from `uv` towards `target` that keeps the map one-to-one; false if none was found.
-bool injectiveStep(const TriMesh& patch, const std::vector<Vec2>& uv, const std::vector<Vec2>& target,
+bool injectiveStep(const TriMesh& patch, const std::vector<Vec2>& uv, const std::vector<Vec2>& target, double clearance,
                    std::vector<Vec2>& out) {
   double t = maxStep(patch, uv, target);
   for (int h = 0; h <= kHalvings && t > 0.0; ++h, t *= 0.5) {
     for (size_t v = 0; v < uv.size(); ++v) out[v] = uv[v] + t * (target[v] - uv[v]);
-    if (checkUvAlongPositivePath(patch, out).injective()) return true;  // every face positive on the way
+    if (checkUvAlongPositivePath(patch, out, clearance).injective()) return true;  // every face positive on the way
   }
   return false;
 }
@@ -202,8 +205,9 @@ Expected<ArapResult> relaxAsRigidAsPossible(const TriMesh& patch, std::vector<Ve
   if (Status s = factorise(patch, faces, system); !s) return s;
   std::vector<Vec2> next(current.size());
   double energy = r.energyBefore;
+  const double clearance = kBoundaryClearance * patch.meanEdgeLength();
   for (int round = 0; round < params.rounds; ++round) {
-    if (!injectiveStep(patch, current, globalStep(patch, faces, rotation, current, system), next)) break;
+    if (!injectiveStep(patch, current, globalStep(patch, faces, rotation, current, system), clearance, next)) break;
     std::swap(current, next);
     ++r.rounds;
     const double previous = energy;

@@ -34,9 +34,24 @@ std::vector<std::array<int, 2>> boundaryEdges(const TriMesh& m) {
   return e;
 }
 
-/// Pairs of boundary edges without a common vertex that meet, found through a uniform grid whose
-/// cells are about the mean edge length.
-int boundaryCrossings(const std::vector<std::array<int, 2>>& edges, const std::vector<Vec2>& uv) {
+/// Distance from c to the segment ab.
+double pointSegmentDistance(const Vec2& a, const Vec2& b, const Vec2& c) {
+  const Vec2 ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0.0 ? std::clamp((c - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - c).norm();
+}
+
+/// Whether segments pq and rs meet or come closer than `clearance`.
+bool segmentsTouch(const Vec2& p, const Vec2& q, const Vec2& r, const Vec2& s, double clearance) {
+  if (segmentsMeet(p, q, r, s)) return true;
+  return clearance > 0.0 && std::min({pointSegmentDistance(r, s, p), pointSegmentDistance(r, s, q),
+                                      pointSegmentDistance(p, q, r), pointSegmentDistance(p, q, s)}) < clearance;
+}
+
+/// Pairs of boundary edges without a common vertex that meet (or come closer than `clearance`),
+/// found through a uniform grid whose cells are about the mean edge length.
+int boundaryCrossings(const std::vector<std::array<int, 2>>& edges, const std::vector<Vec2>& uv, double clearance) {
   if (edges.size() < 4) return 0;
   Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
   double length = 0.0;
@@ -45,17 +60,17 @@ int boundaryCrossings(const std::vector<std::array<int, 2>>& edges, const std::v
     hi = hi.cwiseMax(uv[e[0]]);
     length += (uv[e[1]] - uv[e[0]]).norm();
   }
-  const double cell = std::max(length / edges.size(), 1e-300);
+  const double cell = std::max(length / edges.size() + clearance, 1e-300);
   const double size = std::max({cell, (hi.x() - lo.x()) / 4096.0, (hi.y() - lo.y()) / 4096.0});
   std::unordered_map<long long, std::vector<int>> grid;
   const auto key = [&](long i, long j) { return static_cast<long long>(i) * 1000003LL + j; };
   int crossings = 0;
   for (int k = 0; k < static_cast<int>(edges.size()); ++k) {
     const Vec2 &p = uv[edges[k][0]], &q = uv[edges[k][1]];
-    const long i0 = static_cast<long>((std::min(p.x(), q.x()) - lo.x()) / size),
-               i1 = static_cast<long>((std::max(p.x(), q.x()) - lo.x()) / size),
-               j0 = static_cast<long>((std::min(p.y(), q.y()) - lo.y()) / size),
-               j1 = static_cast<long>((std::max(p.y(), q.y()) - lo.y()) / size);
+    const long i0 = static_cast<long>(std::floor((std::min(p.x(), q.x()) - clearance - lo.x()) / size)),
+               i1 = static_cast<long>(std::floor((std::max(p.x(), q.x()) + clearance - lo.x()) / size)),
+               j0 = static_cast<long>(std::floor((std::min(p.y(), q.y()) - clearance - lo.y()) / size)),
+               j1 = static_cast<long>(std::floor((std::max(p.y(), q.y()) + clearance - lo.y()) / size));
     std::vector<int> seen;
     for (long i = i0; i <= i1; ++i)
       for (long j = j0; j <= j1; ++j) {
@@ -65,7 +80,7 @@ int boundaryCrossings(const std::vector<std::array<int, 2>>& edges, const std::v
           if (o[0] == edges[k][0] || o[0] == edges[k][1] || o[1] == edges[k][0] || o[1] == edges[k][1]) continue;
           if (std::find(seen.begin(), seen.end(), other) != seen.end()) continue;
           seen.push_back(other);
-          crossings += segmentsMeet(p, q, uv[o[0]], uv[o[1]]);
+          crossings += segmentsTouch(p, q, uv[o[0]], uv[o[1]], clearance);
         }
         bucket.push_back(k);
       }
@@ -73,7 +88,7 @@ int boundaryCrossings(const std::vector<std::array<int, 2>>& edges, const std::v
   return crossings;
 }
 
-UvInjectivity checkUv(const TriMesh& patch, const std::vector<Vec2>& uv, bool interiorWindings) {
+UvInjectivity checkUv(const TriMesh& patch, const std::vector<Vec2>& uv, bool interiorWindings, double clearance) {
   UvInjectivity r;
   double mean = 0.0;
   std::vector<double> area(patch.faceCount());
@@ -99,16 +114,22 @@ UvInjectivity checkUv(const TriMesh& patch, const std::vector<Vec2>& uv, bool in
     const bool bad = onBoundary[v] ? angleSum[v] >= 2.0 * kPi - 1e-9 : std::abs(angleSum[v] - 2.0 * kPi) > 1e-6;
     r.windingVertices += bad;
   }
-  r.boundaryCrossings = boundaryCrossings(boundaryEdges(patch), uv);
+  r.boundaryCrossings = boundaryCrossings(boundaryEdges(patch), uv, clearance);
   return r;
 }
 
 }  // namespace
 
-UvInjectivity checkUvInjectivity(const TriMesh& patch, const std::vector<Vec2>& uv) { return checkUv(patch, uv, true); }
+UvInjectivity checkUvInjectivity(const TriMesh& patch, const std::vector<Vec2>& uv) {
+  return checkUv(patch, uv, true, 0.0);
+}
 
-UvInjectivity checkUvAlongPositivePath(const TriMesh& patch, const std::vector<Vec2>& uv) {
-  return checkUv(patch, uv, false);
+UvInjectivity checkUvAlongPositivePath(const TriMesh& patch, const std::vector<Vec2>& uv, double clearance) {
+  return checkUv(patch, uv, false, clearance);
+}
+
+int boundaryContacts(const TriMesh& patch, const std::vector<Vec2>& uv, double clearance) {
+  return boundaryCrossings(boundaryEdges(patch), uv, clearance);
 }
 
 UvDistortion measureUvDistortion(const TriMesh& mesh, const std::vector<Vec2>& cornerUv) {

@@ -38,7 +38,12 @@ UvInjectivity checkUvInjectivity(const TriMesh& patch, const std::vector<Vec2>& 
 /// The same without the interior vertices' windings, for a map reached from a one-to-one map by a
 /// continuous path on which every face stays positive: an interior vertex's winding number is then
 /// an integer that varies continuously, so it stays 1; only the boundary can run over itself.
-UvInjectivity checkUvAlongPositivePath(const TriMesh& patch, const std::vector<Vec2>& uv);
+/// Boundary edges closer than `clearance` count as crossing (a boundary that nearly touches
+/// itself would cross once its UVs are rounded to float).
+UvInjectivity checkUvAlongPositivePath(const TriMesh& patch, const std::vector<Vec2>& uv, double clearance = 0.0);
+
+/// Pairs of boundary edges without a common vertex that meet or come closer than `clearance`.
+int boundaryContacts(const TriMesh& patch, const std::vector<Vec2>& uv, double clearance);
 
 struct UvDistortion {
   double stretchL2 = 1.0;      ///< Sander's L2 stretch over the whole map (1 = isometry up to scale)

@@ -223,6 +223,15 @@ TEST(TextureAtlas, DefaultsOnFandiskAndBunny) {
     EXPECT_NEAR(fig.conformal, r->distortion.conformalMean, 1e-6);
     EXPECT_GT(r->packing, 0.4);
     EXPECT_LT(r->packing, 1.0);
+    // The UVs the checks judged are the floats MeshLab will hold (through a volatile float: GCC 12
+    // can fold a plain double(float(x)) away).
+    int notFloat = 0;
+    for (const Vec2& q : r->cornerUv)
+      for (const double x : {q.x(), q.y()}) {
+        volatile float rounded = static_cast<float>(x);
+        notFloat += static_cast<double>(rounded) != x;
+      }
+    EXPECT_EQ(notFloat, 0);
     if (std::string(name) == "bunny00.off") {
       EXPECT_LE(r->charts.size(), 100u);
       EXPECT_LE(fig.stretch, 1.05);

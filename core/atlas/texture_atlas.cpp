@@ -55,12 +55,12 @@ Expected<Patch> extractPatch(const TriMesh& mesh, const std::vector<int>& faces,
 
 /// A triangle laid out in the plane with its 3D side lengths, counter-clockwise; a sliver (twice
 /// its area below 1e-3 of its longest side squared) or a degenerate one as an equilateral
-/// triangle of side `fallback` (or its longest side): a UV triangle that floating point cannot
-/// turn over once scaled into the atlas.
-std::array<Vec2, 3> layoutTriangle(const Vec3& a, const Vec3& b, const Vec3& c, double fallback) {
+/// triangle of its longest side (or of side `fallback` if that is 0): a UV triangle that floating
+/// point cannot turn over once scaled into the atlas. `fat`: every triangle so.
+std::array<Vec2, 3> layoutTriangle(const Vec3& a, const Vec3& b, const Vec3& c, double fallback, bool fat = false) {
   const double ab = (b - a).norm(), ac = (c - a).norm(), longest = std::max({ab, ac, (c - b).norm()});
   const Vec3 n = (b - a).cross(c - a);
-  if (!(n.norm() > 1e-3 * longest * longest)) {
+  if (fat || !(n.norm() > 1e-3 * longest * longest)) {
     const double side = longest > 0.0 ? longest : fallback;
     return {Vec2(0, 0), Vec2(side, 0), Vec2(0.5 * side, 0.5 * std::sqrt(3.0) * side)};
   }
@@ -202,11 +202,8 @@ int splitUnsurePieces(const TriMesh& mesh, std::vector<Piece>& pieces, const std
     const bool alone = piece.faces.size() == 1;  // a thin face laid out alone: made fat
     for (int f : piece.faces) {
       const Tri& t = mesh.triangles[f];
-      const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
-      const double side = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-      const auto uv =
-          alone ? std::array<Vec2, 3>{Vec2(0, 0), Vec2(side, 0), Vec2(0.5 * side, 0.5 * std::sqrt(3.0) * side)}
-                : layoutTriangle(a, b, c, mesh.meanEdgeLength());
+      const auto uv = layoutTriangle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]],
+                                     mesh.meanEdgeLength(), alone);
       kept.push_back({{f}, {uv[0], uv[1], uv[2]}, piece.chart});
     }
   }

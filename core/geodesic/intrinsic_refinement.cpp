@@ -317,6 +317,7 @@ Expected<RefinedSurface> buildOutput(const IntrinsicTriangulation& tri, const Tr
   for (int c = 0; c < 3 * m.faceCount(); ++c) out.cornerLength[c] = m.length(SignpostMesh::next(c));
   out.inputVertexCount = tri.inputVertexCount();
   out.insertedPoints = m.vertexCount() - tri.inputVertexCount();
+  out.mollification = tri.mollification();
   out.flips = tri.flipCount();
   return out;
 }

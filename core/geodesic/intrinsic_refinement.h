@@ -71,8 +71,12 @@ struct RefinedSurface {
   /// chords only: the geometry is `cornerLength`). Faces coherently oriented.
   TriMesh mesh;
   /// Per corner c = 3f + k: the intrinsic length of the edge facing c (includes the input's
-  /// mollification epsilon, 0 unless the input had a zero-length edge).
+  /// mollification epsilon).
   std::vector<double> cornerLength;
+  /// The epsilon added to every input length (intrinsic_triangulation.h): 0 unless the input had a
+  /// zero-length edge, a triangle-inequality violation or a flat face. The refinement keeps the
+  /// geometry of those lengths (area, angle sums) exactly.
+  double mollification = 0.0;
   /// Per vertex: where it lies on the input (vertices < n: atVertex(i); inserted points: an input
   /// face and barycentric coordinates in the input's own corner order).
   std::vector<SurfacePoint> origin;

@@ -25,8 +25,10 @@
 // has a zero-length edge (coincident vertices) or lengths violating the triangle inequality
 // beyond rounding (intrinsic mollification, Sharp & Crane 2020): the least epsilon that gives
 // every face a margin of 1e-10 times the mean edge length; the angles of those faces are then the
-// mollified (thin, positive-area) triangles'. Flat faces (angles 0, 0, pi) are exact as they are
-// and need none: a zero area is handled by every step (flips refuse to create one).
+// mollified (thin, positive-area) triangles'. Flat faces (angles 0, 0, pi) alone get a margin of
+// only 1e-14 of the mean length: zero-area faces can glue two parts of a surface along a segment
+// that no front crosses by triangle updates, and as thin triangles they are split by the
+// refinement like any sliver; the surface bends by about 1e-7 of the mean length there.
 //
 // Preconditions (checked by refineIntrinsicDelaunay, not here): manifold, faces coherently
 // oriented. Cost: a flip O(1) (plus O(valence) for the simplicial check when asked); an insertion

@@ -162,7 +162,13 @@ void commitRemesh(MeshDocument& doc, const CurrentMesh& current, const SurfaceRe
   logRefinedSurface(result, ctx);
   warnIfSoup(view.mesh, result, ctx);
   logQuality(result, ctx);
-  ctx.log("Time: " + formatDuration(ms));
+  const RemeshStageTimes& t = result.times;
+  const double stages = 1e3 * (t.prepare + t.engine + t.sampling + t.triangulation + t.relaxation + t.measure);
+  ctx.log("Time: " + formatDuration(ms) + " (preparation " + formatDuration(1e3 * t.prepare) + ", engine " +
+          formatDuration(1e3 * t.engine) + ", sampling " + formatDuration(1e3 * t.sampling) + ", triangulation " +
+          formatDuration(1e3 * t.triangulation) + ", relaxation " + formatDuration(1e3 * t.relaxation) +
+          ", the log's measures " + formatDuration(1e3 * t.measure) +
+          ", other (MeshLab's mesh in and out, the speed field) " + formatDuration(std::max(0.0, ms - stages)) + ")");
 }
 
 }  // namespace gr::filters

@@ -209,4 +209,22 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
   return r;
 }
 
+Expected<FpsResult> samplingPrefix(FastMarcher& marcher, const FpsResult& longer, int count) {
+  if (count < 1 || count > static_cast<int>(longer.samples.size()))
+    return invalidInput("a prefix of " + std::to_string(count) + " samples of a sampling of " +
+                        std::to_string(longer.samples.size()));
+  FpsResult r;
+  r.samples.assign(longer.samples.begin(), longer.samples.begin() + count);
+  r.origin.assign(longer.origin.begin(), longer.origin.begin() + count);
+  r.insertionDistance.assign(longer.insertionDistance.begin(), longer.insertionDistance.begin() + count);
+  marcher.reset();
+  for (int i = 0; i < count; ++i)
+    if (Status s = marcher.addSource(r.origin[i], i); !s) return s;
+  if (Status s = marcher.propagate(); !s) return s;
+  r.distance = marcher.distance();
+  r.cell = marcher.cell();
+  for (int v : marcher.acceptedOrder()) r.coveringRadius = std::max(r.coveringRadius, r.distance[v]);
+  return r;
+}
+
 }  // namespace gr

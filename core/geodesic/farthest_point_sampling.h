@@ -58,4 +58,13 @@ Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& met
 /// samples, each the source of its own cell (its index), so the next stage (geodesicDelaunay) can go on from it.
 Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams& params = {}, Progress progress = {});
 
+/// The sampling of `count` samples (1 <= count <= longer.samples.size()) with the parameters that
+/// gave `longer` on the same engine, without sampling again: greedy sampling chooses each sample
+/// from the ones before it alone, so its first `count` samples are that sampling. One
+/// multi-source front (the engine is reset) gives their field and cells, left in the engine as
+/// farthestPointSampling leaves it (cells the same but at ties on their borders, where the fronts
+/// arrive together); the covering radius is the field's largest finite value. Cost: one
+/// front, O(V log V), where sampling again costs about log(count) of them.
+Expected<FpsResult> samplingPrefix(FastMarcher& marcher, const FpsResult& longer, int count);
+
 }  // namespace gr

@@ -64,11 +64,16 @@ AngleStatistics angleStatistics(const TriMesh& mesh) {
   return a;
 }
 
-SurfaceDistance surfaceDistance(const TriMesh& from, const TriMesh& to, Progress progress, int maxThreads) {
+SurfaceDistance surfaceDistance(const TriMesh& from, const TriMesh& to, Progress progress, int maxThreads,
+                                DistanceSamples samples) {
   SurfaceDistance d;
   if (from.vertexCount() == 0 || to.faceCount() == 0) return d;
   CoreMesh target;
   toCoreMesh(to, target);
+  // Sample q: vertex q for q < V, then per face its centroid and the midpoints of its three sides
+  // (or its centroid alone).
+  const long perFace = samples == DistanceSamples::VerticesMidpointsCentroids ? 4 : 1;
+  const long vertices = from.vertexCount(), total = vertices + perFace * from.faceCount();
   // vcglib's default grid has as many cells as faces, most of them empty (a surface fills few
   // cells of a volume), so the occupied ones hold tens of faces each. Sixteen cells per face (at
   // most 2^24 cells, 128 MiB of cell pointers) keeps the faces per occupied cell few, so each
@@ -76,13 +81,11 @@ SurfaceDistance surfaceDistance(const TriMesh& from, const TriMesh& to, Progress
   vcg::GridStaticPtr<CoreFace, double> grid;
   grid.Set(target.face.begin(), target.face.end(), static_cast<int>(std::min(16L * to.faceCount(), 1L << 24)));
   const double searchRadius = 2.0 * (to.boundingBoxDiagonal() + from.boundingBoxDiagonal());
-  // Sample q: vertex q for q < V, then per face its centroid and the midpoints of its three sides.
-  const long vertices = from.vertexCount(), total = vertices + 4L * from.faceCount();
   const auto samplePoint = [&](long q) -> Vec3 {
     if (q < vertices) return from.positions[q];
-    const Tri& t = from.triangles[(q - vertices) / 4];
+    const Tri& t = from.triangles[(q - vertices) / perFace];
     const Vec3 &a = from.positions[t[0]], &b = from.positions[t[1]], &c = from.positions[t[2]];
-    switch ((q - vertices) % 4) {
+    switch ((q - vertices) % perFace) {
       case 0: return (a + b + c) / 3.0;
       case 1: return 0.5 * (a + b);
       case 2: return 0.5 * (b + c);

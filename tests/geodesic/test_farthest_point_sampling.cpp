@@ -112,6 +112,66 @@ TEST(FarthestPointSampling, FormsANet) {
   }
 }
 
+// samplingPrefix: the first k samples of a longer sampling, with their field, are the sampling
+// of k itself (a separate run), on a closed mesh, on two components, on one with boundaries, and
+// with sub-vertex placement.
+void expectPrefixesAreSamplings(const TriMesh& m, FpsParams params, const std::vector<int>& counts) {
+  FastMarcher marcher(m, Metric::uniform());
+  const auto longer = farthestPointSampling(marcher, params);
+  ASSERT_TRUE(longer) << longer.status().message;
+  for (int k : counts) {
+    params.targetCount = k;
+    const auto direct = farthestPointSampling(m, Metric::uniform(), params);
+    const auto prefix = samplingPrefix(marcher, *longer, k);
+    ASSERT_TRUE(direct && prefix) << k;
+    EXPECT_EQ(prefix->samples, direct->samples) << k;
+    ASSERT_EQ(prefix->origin.size(), direct->origin.size());
+    for (size_t i = 0; i < direct->origin.size(); ++i) {
+      EXPECT_EQ(prefix->origin[i].vertex, direct->origin[i].vertex) << k << " sample " << i;
+      EXPECT_EQ(prefix->origin[i].position(m), direct->origin[i].position(m)) << k << " sample " << i;
+    }
+    EXPECT_EQ(prefix->coveringRadius, direct->coveringRadius) << k;
+    // Cells: the same but at a few vertices on the cells' borders, where two fronts bring the same
+    // value in another order (0-3 vertices here): the other label is the cell of a neighbour.
+    int differ = 0;
+    for (int v = 0; v < m.vertexCount(); ++v) {
+      if (prefix->cell[v] == direct->cell[v]) continue;
+      ++differ;
+      bool neighbourHasIt = false;
+      for (const int* c = m.cornersBegin(v); c != m.cornersEnd(v); ++c)
+        for (int w : {m.vertex(TriMesh::next(*c)), m.vertex(TriMesh::prev(*c))})
+          neighbourHasIt = neighbourHasIt || direct->cell[w] == prefix->cell[v];
+      EXPECT_TRUE(neighbourHasIt) << k << " vertex " << v << " is in cell " << prefix->cell[v] << ", not on its border";
+    }
+    EXPECT_LE(differ, 3 + m.vertexCount() / 1000) << k;
+    EXPECT_EQ(marcher.cell(), prefix->cell) << k << ": the engine holds the prefix's cells";
+    for (int v = 0; v < m.vertexCount(); ++v) {
+      if (std::isinf(direct->distance[v])) {
+        ASSERT_EQ(prefix->distance[v], direct->distance[v]) << k << " vertex " << v;
+        continue;
+      }
+      ASSERT_NEAR(prefix->distance[v], direct->distance[v], 1e-12 * m.boundingBoxDiagonal()) << k << " vertex " << v;
+    }
+  }
+  EXPECT_FALSE(samplingPrefix(marcher, *longer, 0));
+  EXPECT_FALSE(samplingPrefix(marcher, *longer, static_cast<int>(longer->samples.size()) + 1));
+}
+
+TEST(FarthestPointSampling, APrefixIsTheShorterSampling) {
+  FpsParams params;
+  params.targetCount = 300;
+  params.seed = 5;
+  expectPrefixesAreSamplings(test::loadRealMesh("fandisk.off"), params, {1, 2, 37, 299, 300});
+  params.targetCount = 120;
+  const TriMesh twoTori = test::loadRealMesh("knot2.off");
+  expectPrefixesAreSamplings(twoTori, params, {1, 2, 3, 64});
+  const TriMesh holes = test::loadRealMesh("elephant-with-holes.off");
+  ASSERT_GT(holes.topology.boundaryLoops, 0);
+  expectPrefixesAreSamplings(holes, params, {5, 100});
+  params.subVertexPlacement = true;
+  expectPrefixesAreSamplings(test::planeGrid(30, 1.0, 0.3), params, {10, 80});
+}
+
 TEST(FarthestPointSampling, DeterministicForASeed) {
   const TriMesh m = test::loadRealMesh("fandisk.off");
   FpsParams params;

@@ -70,10 +70,9 @@ double pointTriangleDistance(const Vec3& p, const Vec3& a, const Vec3& b, const 
   return best;
 }
 
-// The grid search, on any number of threads, against every sample measured to every face.
-TEST(SurfaceDistance, MatchesBruteForceOnAnyNumberOfThreads) {
-  const TriMesh from = test::loadRealMesh("fandisk.off");
-  const TriMesh to = test::icosphere(2, 0.3);  // 320 faces; 58k samples: four blocks
+/// Max and RMS over the samples of `from` (vertices, centroids and, if asked, the sides' midpoints),
+/// each measured to every face of `to`.
+SurfaceDistance bruteForceDistance(const TriMesh& from, const TriMesh& to, bool midpoints) {
   double maxBrute = 0.0, sumSq = 0.0;
   long n = 0;
   const auto sample = [&](const Vec3& p) {
@@ -87,17 +86,32 @@ TEST(SurfaceDistance, MatchesBruteForceOnAnyNumberOfThreads) {
   for (const Vec3& p : from.positions) sample(p);
   for (const Tri& t : from.triangles) {
     const Vec3 &a = from.positions[t[0]], &b = from.positions[t[1]], &c = from.positions[t[2]];
-    sample((a + b + c) / 3.0), sample(0.5 * (a + b)), sample(0.5 * (b + c)), sample(0.5 * (c + a));
+    sample((a + b + c) / 3.0);
+    if (midpoints) sample(0.5 * (a + b)), sample(0.5 * (b + c)), sample(0.5 * (c + a));
   }
-  const double rmsBrute = std::sqrt(sumSq / n);
-  const SurfaceDistance one = surfaceDistance(from, to, {}, 1);
-  EXPECT_NEAR(one.max, maxBrute, 1e-9 * maxBrute);
-  EXPECT_NEAR(one.rms, rmsBrute, 1e-9 * rmsBrute);
-  for (int threads : {2, 3, 8}) {
-    const SurfaceDistance many = surfaceDistance(from, to, {}, threads);
-    EXPECT_EQ(many.max, one.max) << threads << " threads";
-    EXPECT_EQ(many.rms, one.rms) << threads << " threads";
-    EXPECT_TRUE(many.complete);
+  SurfaceDistance d;
+  d.max = maxBrute;
+  d.rms = std::sqrt(sumSq / n);
+  return d;
+}
+
+// The grid search, on any number of threads, against every sample measured to every face; both
+// sample sets.
+TEST(SurfaceDistance, MatchesBruteForceOnAnyNumberOfThreads) {
+  const TriMesh from = test::loadRealMesh("fandisk.off");
+  const TriMesh to = test::icosphere(2, 0.3);  // 320 faces; 58k samples: four blocks
+  for (const DistanceSamples samples :
+       {DistanceSamples::VerticesMidpointsCentroids, DistanceSamples::VerticesAndCentroids}) {
+    const SurfaceDistance brute = bruteForceDistance(from, to, samples == DistanceSamples::VerticesMidpointsCentroids);
+    const SurfaceDistance one = surfaceDistance(from, to, {}, 1, samples);
+    EXPECT_NEAR(one.max, brute.max, 1e-9 * brute.max);
+    EXPECT_NEAR(one.rms, brute.rms, 1e-9 * brute.rms);
+    for (int threads : {2, 3, 8}) {
+      const SurfaceDistance many = surfaceDistance(from, to, {}, threads, samples);
+      EXPECT_EQ(many.max, one.max) << threads << " threads";
+      EXPECT_EQ(many.rms, one.rms) << threads << " threads";
+      EXPECT_TRUE(many.complete);
+    }
   }
 }
 

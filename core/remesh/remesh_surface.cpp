@@ -55,6 +55,8 @@ Status checkRemeshInput(const TriMesh& input, const SurfaceRemeshParams& params)
     return invalidInput("CentroidalIterations must be 0 to " +
                         std::to_string(SurfaceRemeshParams::kMaxCentroidalIterations) + ", got " +
                         std::to_string(params.centroidalIterations));
+  if (!(params.countTolerance >= 0.0) || !std::isfinite(params.countTolerance))
+    return invalidInput("the count tolerance must be finite and >= 0, got " + std::to_string(params.countTolerance));
   return Status::ok();
 }
 
@@ -207,8 +209,9 @@ std::pair<bool, int> miss(const SampledDual& d, int target) {
 /// fewer so that the output lands at the count asked for, at most kMaxSamplingRounds samplings in
 /// all; of the valid results the one closest to the count without crossing faces is kept (the
 /// first of equals; with crossings only if all have some). A redo that fails (the repair does not
-/// converge from too few samples) ends the search with the best so far. Without a count (spacing
-/// only), or when the first sampling lands on it, one sampling.
+/// converge from too few samples) ends the search with the best so far; so does an output with no
+/// crossing faces at the count or above it by at most countTolerance. Without a count (spacing only), or when
+/// the first sampling lands on it, one sampling.
 Expected<SampledDual> sampleToCount(FastMarcher& marcher, const FrontSurface& front, const TriMesh& surface,
                                     const SurfaceRemeshParams& params, Progress progress, SurfaceRemeshResult& r) {
   const int target = params.sampling.targetCount;
@@ -235,7 +238,7 @@ Expected<SampledDual> sampleToCount(FastMarcher& marcher, const FrontSurface& fr
       best = std::move(*run);
       bestMiss = runMiss;
     }
-    if (got == target) break;
+    if (!runMiss.first && got >= target && got - target <= params.countTolerance * target) break;
     if (got > target) above = std::min(above, request);
     if (got < target) below = std::max(below, request);
     request = nextRequest(request, got, target, below, above);

@@ -67,6 +67,7 @@ TEST(RemeshQualityCentroidal, EvenerAnglesThanCgalIsotropicAtTheSameCount) {
   SurfaceRemeshParams params;
   params.sampling.targetCount = input.vertexCount() / 10;
   params.relaxation.iterations = 10;
+  params.countTolerance = 0.0;  // both at the count itself, so that they compare at the same count
   const Expected<SurfaceRemeshResult> plain = remeshSurface(input, params);
   params.centroidalIterations = 10;
   const Expected<SurfaceRemeshResult> centroidal = remeshSurface(input, params);
@@ -113,6 +114,33 @@ TEST(RemeshQualityCentroidal, EvenerAnglesThanCgalIsotropicAtTheSameCount) {
 // The same pipeline on the same surfaces with needles (angles under 1 degree) and zero-area faces
 // (test::withBadTriangles): a valid mesh of the input's topology, every vertex finite and on the
 // input, and the same quality bounds.
+// The count search's tolerance: by default it stops at an output from the count asked for to 1%
+// above it (bunny00 at 10%: the first sampling, 5 samples added), with 0 it goes on to the count
+// itself; a negative tolerance is refused.
+TEST(RemeshCount, StopsWithinTheToleranceAboveTheCount) {
+  const TriMesh input = test::loadRealMesh("bunny00.off");
+  SurfaceRemeshParams params;
+  params.sampling.targetCount = input.vertexCount() / 10;
+  params.measure = false;
+  const int target = params.sampling.targetCount;
+  const Expected<SurfaceRemeshResult> tolerant = remeshSurface(input, params);
+  params.countTolerance = 0.0;
+  const Expected<SurfaceRemeshResult> exact = remeshSurface(input, params);
+  ASSERT_TRUE(tolerant && exact);
+  std::printf("bunny00, %d asked: %d vertices in %d samplings (tolerance 1%%), %d in %d (tolerance 0)\n", target,
+              tolerant->mesh.vertexCount(), tolerant->samplingRounds, exact->mesh.vertexCount(), exact->samplingRounds);
+  ASSERT_GT(tolerant->addedSamples, 0) << "the case needs a repair that adds samples";
+  EXPECT_EQ(tolerant->samplingRounds, 1);
+  EXPECT_GE(tolerant->mesh.vertexCount(), target);
+  EXPECT_LE(tolerant->mesh.vertexCount(), 1.01 * target);
+  EXPECT_GT(exact->samplingRounds, 1);
+  EXPECT_LT(std::abs(exact->mesh.vertexCount() - target), tolerant->mesh.vertexCount() - target);
+  params.countTolerance = -0.5;
+  const Expected<SurfaceRemeshResult> refused = remeshSurface(input, params);
+  ASSERT_FALSE(refused);
+  EXPECT_EQ(refused.status().code, StatusCode::InvalidInput);
+}
+
 TEST(RemeshQualityBadTriangles, NeedlesAndZeroAreaFaces) {
   for (const char* name : {"fandisk.off", "bunny00.off"}) {
     SCOPED_TRACE(name);

@@ -86,8 +86,9 @@ void declareTextureAtlas(const MeshModel& /*mesh*/, RichParameterList& params) {
                             "(default " +
                                 QString::number(d.segmentation.featureAlignment) + ")."));
   params.addParam(RichInt(param::kBasePoints, d.flattening.basePoints, "Base points",
-                          "B: farthest-point base points of each chart's geodesic LLE (at most one per 5 vertices "
-                          "of the chart; default " +
+                          "B: farthest-point base points of each chart's geodesic LLE, at most: a chart of V "
+                          "vertices gets at most V/5 and at most max(25, V/50), its ARAP relaxation doing the rest "
+                          "(default " +
                               QString::number(d.flattening.basePoints) + ", as the paper)."));
   params.addParam(RichInt(param::kNeighbours, d.flattening.neighbours, "Neighbours",
                           "K: nearest base points of each LLE reconstruction, 3 <= K < B (default " +

@@ -18,6 +18,12 @@ namespace {
 /// A small chart gets at most one base point per this many vertices (B = 100 on a chart of 120
 /// vertices makes nearly every vertex a base, and LLE on single edges folds).
 constexpr int kVerticesPerBase = 5;
+/// Beyond kMinBases, a chart needs no more than one base point per this many vertices: its map
+/// is relaxed by ARAP after the Nystrom extension, and the bases' fronts are most of the LLE's
+/// time. bunny00's 30 charts (about 1,250 vertices each) with 25 bases instead of 100: stretch
+/// 1.0018 and mean conformal 1.0360 either way, packing 0.595 / 0.594, 0.5 s less CPU time.
+constexpr int kVerticesPerBaseLarge = 50;
+constexpr int kMinBases = 25;
 /// Rounds of splitting unsure pieces and packing again before the atlas is refused (Degenerate).
 constexpr int kSplitRounds = 2;
 
@@ -307,7 +313,9 @@ Expected<ChartMap> flattenChart(const TriMesh& patch, const LleFlatteningParams&
     if (accept(layout)) return map;
   }
   LleFlatteningParams p = params;
-  p.basePoints = std::min(p.basePoints, std::max(4, patch.vertexCount() / kVerticesPerBase));
+  const int v = patch.vertexCount();
+  p.basePoints =
+      std::min({p.basePoints, std::max(kMinBases, v / kVerticesPerBaseLarge), std::max(4, v / kVerticesPerBase)});
   p.neighbours = std::min(p.neighbours, p.basePoints - 1);
   if (p.basePoints >= 4) {
     Expected<LleFlatteningResult> r = flattenGeodesicLle(patch, p, progress);

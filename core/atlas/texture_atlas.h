@@ -37,7 +37,8 @@ struct AtlasParams {
     p.lloyd.iterations = 10;
     return p;
   }();
-  /// B and K of each chart's LLE (capped at the chart's vertices: B <= V, K < B).
+  /// B and K of each chart's LLE, B the most a chart gets: a chart of V vertices gets at most
+  /// V / 5 and at most max(25, V / 50) (its ARAP relaxation does the rest); K < B.
   LleFlatteningParams flattening;
   int textureSize = 1024;  ///< texels per side of the (square) texture, >= 16
   int gutter = 4;          ///< empty texels around each chart, >= 0

@@ -32,13 +32,6 @@ struct AngleStatistics {
 
 AngleStatistics angleStatistics(const TriMesh& mesh);
 
-/// Distance from the surface `from` to the surface `to`, sampled at the vertices, edge midpoints
-/// and face centroids of `from` (or vertices and centroids only: `samples`; each to its nearest point of `to`, found with vcglib's grid).
-/// The samples are measured in fixed blocks on all hardware threads (up to `maxThreads`; 0 = as
-/// many as the machine has) and the blocks combined in order, so the result does not depend on
-/// the thread count. Cost: O(V + F) nearest-point queries on a grid of 16 cells per face of `to`
-/// (times: docs/BENCHMARKS.md). `progress` is reported from the calling thread only; if it
-/// cancels, the result is marked incomplete.
 /// Which points of `from` surfaceDistance measures.
 enum class DistanceSamples {
   /// Every vertex, face centroid and midpoint of each face's sides: the project's measure (tests,
@@ -54,6 +47,15 @@ struct SurfaceDistance {
   double rms = 0.0;      ///< root mean square over the samples
   bool complete = true;  ///< false if cancelled through the progress callback
 };
+
+/// Distance from the surface `from` to the surface `to`, sampled at the vertices, edge midpoints
+/// and face centroids of `from` (or vertices and centroids only: `samples`), each to its nearest
+/// point of `to`, found with vcglib's grid.
+/// The samples are measured in fixed blocks on all hardware threads (up to `maxThreads`; 0 = as
+/// many as the machine has) and the blocks combined in order, so the result does not depend on
+/// the thread count. Cost: O(V + F) nearest-point queries on a grid of 16 cells per face of `to`
+/// (times: docs/BENCHMARKS.md). `progress` is reported from the calling thread only; if it
+/// cancels, the result is marked incomplete.
 SurfaceDistance surfaceDistance(const TriMesh& from, const TriMesh& to, Progress progress = {}, int maxThreads = 0,
                                 DistanceSamples samples = DistanceSamples::VerticesMidpointsCentroids);
 

@@ -210,8 +210,8 @@ std::pair<bool, int> miss(const SampledDual& d, int target) {
 /// all; of the valid results the one closest to the count without crossing faces is kept (the
 /// first of equals; with crossings only if all have some). A redo that fails (the repair does not
 /// converge from too few samples) ends the search with the best so far; so does an output with no
-/// crossing faces at the count or above it by at most countTolerance. Without a count (spacing only), or when
-/// the first sampling lands on it, one sampling.
+/// crossing faces at the count or above it by at most countTolerance. Without a count (spacing
+/// only), or when the first sampling lands on it, one sampling.
 Expected<SampledDual> sampleToCount(FastMarcher& marcher, const FrontSurface& front, const TriMesh& surface,
                                     const SurfaceRemeshParams& params, Progress progress, SurfaceRemeshResult& r) {
   const int target = params.sampling.targetCount;
@@ -267,9 +267,15 @@ Status measureOutput(const TriMesh& input, SurfaceRemeshResult& r, Progress prog
   } catch (const std::system_error&) {
     toInput();  // no thread to be had: one after the other
   }
-  r.measures.fromInput =
-      surfaceDistance(input, r.mesh, progress, helper ? 1 : 0, DistanceSamples::VerticesAndCentroids);
+  std::exception_ptr failedHere;  // the helper is joined before anything is thrown
+  try {
+    r.measures.fromInput =
+        surfaceDistance(input, r.mesh, progress, helper ? 1 : 0, DistanceSamples::VerticesAndCentroids);
+  } catch (...) {
+    failedHere = std::current_exception();
+  }
   if (helper) helper->join();
+  if (failedHere) std::rethrow_exception(failedHere);
   if (failed) std::rethrow_exception(failed);
   if (!r.measures.toInput.complete || !r.measures.fromInput.complete) return cancelled();
   r.measures.inputDiagonal = input.boundingBoxDiagonal();

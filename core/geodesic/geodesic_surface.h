@@ -46,7 +46,8 @@ enum class SurfaceRefinement {
 
 struct GeodesicSurfaceParams {
   SurfaceRefinement refinement = SurfaceRefinement::Auto;
-  /// The refinement's bound (25 degrees) and budget (10 V + 1000 points).
+  /// The refinement's bound (25 degrees) and budget (10 V + 1000 points, plus 2 per equilateral
+  /// triangle of side maxEdgeFraction x diagonal in the surface's area).
   IntrinsicRefinementParams intrinsic;
   /// A refined surface also has no edge longer than this share of the input's bounding-box
   /// diagonal (the smaller of this and intrinsic.maxEdgeLength; 0 = no such bound): cheese.off

@@ -1,7 +1,9 @@
 #include "core/geodesic/intrinsic_refinement.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <queue>
 #include <string>
 #include <utility>
@@ -25,6 +27,10 @@ constexpr int kRescans = 5;
 constexpr size_t kCavityFaces = 64;
 /// Rounds of splits that make the output simplicial.
 constexpr int kSimplicialRounds = 20;
+/// With a length bound L, the default budget also has this many points per equilateral triangle
+/// of side L that the surface's area holds (a Delaunay refinement under a length bound inserts
+/// about one: star.off at 2% of its diagonal 2,320 points for 2,285 such triangles).
+constexpr double kPointsPerBoundTriangle = 2.0;
 
 Status checkInput(const TriMesh& input, const IntrinsicRefinementParams& p) {
   if (input.faceCount() == 0) return invalidInput("intrinsic Delaunay refinement: the mesh has no faces");
@@ -95,6 +101,23 @@ int encroachedBoundaryEdge(const SignpostMesh& m, int f, const Vec2& q) {
   return -1;
 }
 
+/// The default budget (IntrinsicRefinementParams::maxInsertions = -1): 10 V + 1000 points, plus,
+/// under a length bound L, kPointsPerBoundTriangle per equilateral triangle of side L in the
+/// surface's area (a small mesh of a large surface needs more points than its vertex count says).
+int defaultBudget(const IntrinsicTriangulation& tri, double maxLength) {
+  double budget = 10.0 * tri.inputVertexCount() + 1000.0;
+  if (std::isfinite(maxLength)) {
+    const SignpostMesh& m = tri.mesh();
+    double area = 0.0;
+    for (int f = 0; f < m.faceCount(); ++f) {
+      const std::array<Vec2, 3> p = m.layout(f);
+      area += 0.5 * std::abs(cross2(p[1] - p[0], p[2] - p[0]));
+    }
+    budget += kPointsPerBoundTriangle * area / (0.25 * std::sqrt(3.0) * maxLength * maxLength);
+  }
+  return static_cast<int>(std::min(budget, 0.5 * std::numeric_limits<int>::max()));
+}
+
 /// The refinement loop: a priority queue of faces to refine, largest first (boundary faces before
 /// all others), stamped so that entries of faces changed since they were queued are skipped.
 class Refiner {
@@ -105,7 +128,7 @@ class Refiner {
     minTanHalfSquared_ = std::tan(0.5 * minAngle_) * std::tan(0.5 * minAngle_);
     maxLength_ = params.maxEdgeLength;
     tinyRadius_ = kTinyCircumradius * meanEdge;
-    budget_ = params.maxInsertions >= 0 ? params.maxInsertions : 10 * tri.inputVertexCount() + 1000;
+    budget_ = params.maxInsertions >= 0 ? params.maxInsertions : defaultBudget(tri, maxLength_);
   }
 
   /// Refines until no face needs it or the budget is spent (flips refusing to make the

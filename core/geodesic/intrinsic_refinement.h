@@ -36,7 +36,8 @@
 //
 // Cost: O(F) for the first flips' queue plus O(flips) (in practice a small multiple of F); per
 // inserted point, O(faces crossed by the traces) + O(flips around it) + O(log F) for the queue;
-// with the default budget (10 V + 1000 points) O((V + points) log V) when traces stay short.
+// with the default budget (10 V + 1000 points, plus 2 A / (sqrt(3) L^2 / 4) under a length bound L)
+// O((V + points) log V) when traces stay short.
 // Memory: O(F + points) (about 120 bytes per intrinsic face).
 #pragma once
 
@@ -58,7 +59,8 @@ struct IntrinsicRefinementParams {
   double minAngleDegrees = 25.0;
   /// And every edge at most this long (mesh units, > 0); +inf (default) = no length bound.
   double maxEdgeLength = kUnbounded;
-  /// At most this many inserted points (>= 0); -1 (default) = 10 x the input's vertex count + 1000.
+  /// At most this many inserted points (>= 0); -1 (default) = 10 x the input's vertex count + 1000,
+  /// plus, with a length bound L, 2 per equilateral triangle of side L in the surface's area.
   int maxInsertions = -1;
   /// Only flip to Delaunay, insert no circumcentre (points are still inserted where the output
   /// would not be simplicial without them).

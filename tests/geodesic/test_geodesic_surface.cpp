@@ -101,11 +101,12 @@ Accuracy accuracyOf(const std::string& name, const TriMesh& m) {
   return a;
 }
 
-// Issue 17's accuracy on every mesh of the data set (cheese.off included): mean relative error
-// <= 1% against CGAL's exact geodesics, and no worse than vcglib's on the same mesh and source
-// (within 0.2 points: on a few meshes of 4 to 20 vertices vcglib's is exactly 0, every vertex
-// lying on an edge path from the source; the refined surface, which Auto builds for such coarse
-// meshes, gives 0.01 to 0.2% there).
+// Issue 17's accuracy on every mesh of the data set (cheese.off and star.off included): mean
+// relative error <= 1% against CGAL's exact geodesics, and no worse than vcglib's on the same mesh
+// and source within 0.1 point. The slack is for three meshes of 6 to 18 vertices whose every
+// vertex lies on an edge path from the source, where vcglib's is 0 or nearly: the refined surface
+// gives 0.008% (corner_with_sharp_edge), 0.052% (hedra_open) and, on star.off (a cube with a spike
+// on each face, whose saddle corners the first-order front undershoots), 0.098% against 0.048%.
 TEST_P(DataSetGeodesic, WithinOnePercentOfExactAndNoWorseThanVcglib) {
   Expected<TriMesh> loaded = loadTriMesh(test::meshPath(GetParam()));
   if (!loaded) {  // b9.ply (a point cloud): see NoValueBelowTheStraightLine
@@ -121,17 +122,9 @@ TEST_P(DataSetGeodesic, WithinOnePercentOfExactAndNoWorseThanVcglib) {
     return;
   }
   const Accuracy a = accuracyOf(GetParam(), *loaded);
-  // Known, not reached (issue 17's closing note): star.off (14 vertices, a cube with a spike on
-  // each face: 0.28% against vcglib's 0.05%, the refined front undershoots by 2.5% at the saddle
-  // corner across a spike from the source). Held at its measured figure, so that any change shows.
-  // (degtri_sliding.off, whose zero-area faces glue its two halves along a segment, was 14.5%
-  // until flat faces were mollified: 0.000% now, vcglib 1.63%.)
-  if (GetParam() == "star.off") {
-    EXPECT_LE(a.ours.meanRelative, 0.0029);
-    return;
-  }
   EXPECT_LE(a.ours.meanRelative, 0.01);
-  EXPECT_LE(a.ours.meanRelative, a.vcglib.meanRelative + 0.002);
+  EXPECT_LE(a.ours.meanRelative, a.vcglib.meanRelative + 0.001);
+  EXPECT_FALSE(a.result.budgetExhausted);
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, DataSetGeodesic, ::testing::ValuesIn(test::dataSetMeshFiles()),

@@ -271,6 +271,22 @@ TEST(IntrinsicRefinement, MaxEdgeLengthIsReached) {
   for (double l : r->cornerLength) EXPECT_LE(l, 0.1 * (1.0 + 1e-9));
 }
 
+// The default budget follows the length bound, not the vertex count: a square of two triangles
+// (4 vertices, 10 V + 1000 = 1,040 points) needs about 3,000 points for edges of 2% of its side.
+TEST(IntrinsicRefinement, DefaultBudgetCoversTheLengthBoundOnACoarseMesh) {
+  const TriMesh input = test::planeGrid(1, 1.0);
+  ASSERT_EQ(input.vertexCount(), 4);
+  IntrinsicRefinementParams params;
+  params.maxEdgeLength = 0.02;
+  const Expected<RefinedSurface> r = refineTimed("square of 2 faces, edges <= 0.02", input, params);
+  ASSERT_TRUE(r) << r.status().message;
+  EXPECT_FALSE(r->budgetExhausted);
+  EXPECT_GT(r->insertedPoints, 10 * input.vertexCount() + 1000);
+  expectValidRefinement(input, *r);
+  expectFlatLengths(*r, 1.0);
+  for (double l : r->cornerLength) EXPECT_LE(l, 0.02 * (1.0 + 1e-9));
+}
+
 TEST(IntrinsicRefinement, FlipOnlyMakesTheSurfaceDelaunay) {
   const TriMesh input = sliverSquare();
   IntrinsicRefinementParams params;

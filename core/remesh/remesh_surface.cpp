@@ -238,14 +238,17 @@ std::pair<bool, int> miss(const SampledDual& d, int target) {
 }
 
 /// Whether a first sampling that missed the count is worth a centroidal one at the same count:
-/// the repair added more than kRescueShare of the count (thin plates, whose Voronoi cells of
-/// farthest points wrap around their rims: the gear of tests/support/cad_meshes.h, 104 asked,
-/// about 110 added; Lloyd's cells do not). Only when the caller asked for no centroidal
-/// iterations (else the first sampling was centroidal already). Crossing faces alone are no
-/// reason: armadillo at 30% and the 1.66M armadillo cross before the count search lands, and
-/// Lloyd there costs 5x (2.6 s more; 81 s more) for no better count.
-bool rescuable(const SurfaceRemeshParams& params, int got, int target) {
-  return params.centroidalIterations == 0 && target > 0 && got - target > kRescueShare * target;
+/// the repair added more than kRescueShare of the count, or, on a surface whose triangles were
+/// poor (refined: CAD exports, thin plates), the output crosses itself. There the Voronoi cells of
+/// farthest points wrap around the plates' rims (the gear of tests/support/cad_meshes.h: 104
+/// asked, about 110 added, or 105 with crossing faces from another first vertex); Lloyd's cells
+/// do not. On scans crossing faces come from the relaxation at sharp creases, which Lloyd does
+/// not cure: armadillo at 30% and the 1.66M armadillo would pay 5x (2.6 s more; 81 s more) for no
+/// better count. Only when the caller asked for no centroidal iterations (else the first sampling
+/// was centroidal already).
+bool rescuable(const SurfaceRemeshParams& params, bool refined, bool crossing, int got, int target) {
+  return params.centroidalIterations == 0 && target > 0 &&
+         (got - target > kRescueShare * target || (refined && crossing));
 }
 
 /// Issue 20: when the repair of the triangulation added samples, the sampling is redone with
@@ -287,7 +290,7 @@ Expected<SampledDual> sampleToCount(FastMarcher& marcher, const FrontSurface& fr
       bestMiss = runMiss;
     }
     if (!runMiss.first && got >= target && got - target <= params.countTolerance * target) break;
-    if (round == 0 && rescuable(params, got, target)) {
+    if (round == 0 && rescuable(params, front.geodesic.refined, runMiss.first, got, target)) {
       // Samples moved rather than added: the same count again, centroidal.
       roundParams.centroidalIterations = kRescueCentroidalIterations;
       r.centroidalRescue = true;

@@ -124,8 +124,8 @@ struct SurfaceRemeshResult {
   /// crossing faces (selfIntersectingFaces), from `sampledAsked` samples asked of the sampling.
   /// fewestCount: the fewest output vertices of these samplings' outputs without crossing faces
   /// (0 if none had none); above countAsked, the fewest this surface reached at these settings.
-  /// centroidalRescue: the first sampling's repair added more than 10% of the count, so the
-  /// samplings after it were centroidal (3 geodesic Lloyd iterations,
+  /// centroidalRescue: the first sampling's repair added more than 10% of the count (or, on a
+  /// refined surface, its output crossed itself), so the samplings after it were centroidal (3 geodesic Lloyd iterations,
   /// samples moved instead of added).
   int countAsked = 0;
   bool centroidalRescue = false;

@@ -20,7 +20,9 @@
 #include "core/measure/evaluation.h"
 #include "core/mesh/vcg_convert.h"
 #include "core/mesh/vcg_mesh.h"
+#include "core/remesh/remesh_surface.h"
 #include "tests/oracles/geodesic_oracles.h"
+#include "tests/oracles/remesh_oracles.h"
 #include "tests/oracles/uv_oracles.h"
 #include "tests/support/cad_meshes.h"
 #include "tests/support/test_support.h"
@@ -255,6 +257,40 @@ TEST(Meshlabserver, CadSliverMeshRefinedWithinOnePercentOfExact) {
   }
   ASSERT_EQ(written.size(), 2u);
   EXPECT_EQ(written[0], written[1]) << "Auto refines the gear as On does";
+}
+
+// Issues 17 and 20: the CAD gear plate through `Remeshing: Geodesic Uniform` at 10% (the README's
+// script with only TargetVertices changed). Its first sampling (a vertex order of MeshLab's own:
+// 105 vertices with crossing faces) needs the samples moved by Lloyd iterations, not added (353
+// vertices before): the count within 10%, the input's topology, no crossing faces (CGAL's test).
+TEST(Meshlabserver, CadGearRemeshedAtItsCountWithoutCrossingFaces) {
+  const TriMesh gear = test::cadGear();
+  const std::string in = kOut + "cad_gear_remesh.off", out = kOut + "cad_gear_remesh.ply";
+  const std::string script = kOut + "cad_gear_remesh.mlx";
+  ASSERT_TRUE(test::writeOff(gear, in));
+  const int target = SurfaceRemeshParams::defaultTargetCount(gear.vertexCount());
+  std::ifstream readme(kResources + "uniform_remesh_10pct.mlx");
+  std::stringstream text;
+  text << readme.rdbuf();
+  std::string mlx = text.str();
+  const size_t at = mlx.find("value=\"647\"");
+  ASSERT_NE(at, std::string::npos) << mlx;
+  mlx.replace(at, 11, "value=\"" + std::to_string(target) + "\"");
+  std::ofstream(script) << mlx;
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + in + "' -o '" + out + "' -s '" + script + "'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Expected<TriMesh> result = loadTriMesh(out);
+  ASSERT_TRUE(result) << run.output;
+  std::printf("cad_gear through meshlabserver at %d: %d vertices\n", target, result->vertexCount());
+  EXPECT_NEAR(result->vertexCount(), target, 0.1 * target) << run.output;
+  EXPECT_TRUE(result->topology.isManifold());
+  EXPECT_EQ(result->topology.components, 1);
+  EXPECT_EQ(result->topology.genus, 0);
+  EXPECT_EQ(result->topology.boundaryLoops, 0);
+  const Expected<std::vector<std::pair<int, int>>> crossing = oracle::selfIntersections(*result);
+  ASSERT_TRUE(crossing) << crossing.status().message;
+  EXPECT_EQ(crossing->size(), 0u) << run.output;
 }
 
 // --- The issue's acceptance runs, one resources/acceptance/*.mlx each -----------------------

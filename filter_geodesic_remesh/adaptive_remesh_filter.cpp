@@ -139,6 +139,11 @@ Status applyTotalCurvature(MeshDocument& doc, const RichParameterList& params, F
           "from " +
           formatNumber(*lo, "%.4g") + " to " + formatNumber(*top, "%.4g") + ", " + formatNumber(kRampPercentile, "%g") +
           "th percentile " + formatNumber(hi, "%.4g") + " (colour ramp from 0 to it)");
+  if (tau->looksLikeTriangleSoup)
+    ctx.warn(std::to_string(tau->looseFaces) + " of the " + std::to_string(mesh.faceCount()) +
+             " faces share no edge with another face (separate triangles, as an STL file read without merging its "
+             "vertices gives): their vertices have no neighbours to bend against and get 0. Run 'Cleaning and "
+             "Repairing > Merge Close Vertices' first.");
   ctx.log("Time: " + formatDuration(ms));
   return Status::ok();
 }

@@ -380,6 +380,8 @@ Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvaturePar
     result.tau[original] = std::abs(a) + std::abs(b);
   }
   result.meanNeighbourhoodSize = double(totalSize) / n;
+  result.looseFaces = mesh.looseFaceCount();
+  result.looksLikeTriangleSoup = mesh.looksLikeTriangleSoup();
   progress.report(1.0, "Curvature");
   return result;
 }

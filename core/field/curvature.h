@@ -84,6 +84,10 @@ struct CurvatureResult {
   double radius = 0.0;                 ///< the radius used (mesh units); each ball is at least its vertex's 1-ring
   double meanNeighbourhoodSize = 0.0;  ///< vertices with w > 0 per ball, on average (v included)
   int oneRingRadius = 0;               ///< vertices whose ball took their 1-ring's radius (not smaller than `radius`)
+  /// The mesh's faces that share no edge with another (their vertices get 0: no dihedral angle),
+  /// and whether they are a triangle soup (TriMesh::looksLikeTriangleSoup).
+  int looseFaces = 0;
+  bool looksLikeTriangleSoup = false;
 };
 
 /// Curvature of every vertex. Signs: positive where the surface is convex for its orientation

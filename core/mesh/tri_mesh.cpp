@@ -298,6 +298,18 @@ double TriMesh::boundingBoxDiagonal() const {
   return (hi - lo).norm();
 }
 
+int TriMesh::looseFaceCount() const {
+  int loose = 0;
+  for (int f = 0; f < faceCount(); ++f)
+    loose += oppositeCorner[3 * f] < 0 && oppositeCorner[3 * f + 1] < 0 && oppositeCorner[3 * f + 2] < 0;
+  return loose;
+}
+
+bool TriMesh::looksLikeTriangleSoup() const {
+  const int loose = looseFaceCount();
+  return loose > 0 && 10 * loose >= faceCount();
+}
+
 double TriMesh::meanEdgeLength() const {
   if (triangles.empty()) return 0.0;
   double sum = 0.0;

@@ -77,6 +77,11 @@ struct TriMesh {
   double boundingBoxDiagonal() const;
   /// Mean length of the edges of all faces (each interior edge counted twice).
   double meanEdgeLength() const;
+  /// Faces with no neighbour across any of their edges (a triangle soup: all of them). O(F).
+  int looseFaceCount() const;
+  /// At least 10% of the faces are loose: an STL read without merging its vertices, whose
+  /// algorithms see separate triangles (the filters say so and name MeshLab's remedy).
+  bool looksLikeTriangleSoup() const;
 };
 
 /// Builds the adjacency and topology of a triangle mesh.

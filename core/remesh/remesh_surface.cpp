@@ -65,14 +65,6 @@ Status checkRemeshInput(const TriMesh& input, const SurfaceRemeshParams& params)
   return Status::ok();
 }
 
-/// Faces with no neighbour across any of their edges.
-int countLooseFaces(const TriMesh& mesh) {
-  int loose = 0;
-  for (int f = 0; f < mesh.faceCount(); ++f)
-    loose += mesh.oppositeCorner[3 * f] < 0 && mesh.oppositeCorner[3 * f + 1] < 0 && mesh.oppositeCorner[3 * f + 2] < 0;
-  return loose;
-}
-
 /// The surface the work runs on: a coherently oriented copy when some faces run against their
 /// neighbours (the output takes its orientation from the faces), else nothing (use the input).
 struct OrientedSurface {
@@ -410,8 +402,8 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   r.repairRounds = dual.repairRounds;
   r.flippedEdges = dual.flippedEdges;
   r.reorientedFaces = static_cast<int>(std::count(oriented->flipped.begin(), oriented->flipped.end(), 1));
-  r.looseFaces = countLooseFaces(input);
-  r.looksLikeTriangleSoup = r.looseFaces > 0 && 10 * r.looseFaces >= input.faceCount();
+  r.looseFaces = input.looseFaceCount();
+  r.looksLikeTriangleSoup = input.looksLikeTriangleSoup();
   lap(clock);
   if (params.measure)
     if (Status s = measureOutput(input, r, progress.sub(remeshShare, 1.0)); !s) return s;

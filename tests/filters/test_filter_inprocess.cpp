@@ -899,18 +899,38 @@ TEST_F(FilterInProcess, TotalCurvatureOfASphereIsTwoOverR) {
   EXPECT_EQ(doc.meshList.size(), 1);
 }
 
-// A triangle soup (every face with its own three vertices, as an STL read without merging):
-// valid output with the input's topology (each face a component: the output is the input), and
-// a warning that says what to do.
-TEST_F(FilterInProcess, UniformRemeshOfATriangleSoupWarnsToMergeVertices) {
+/// An icosphere's faces as separate triangles (every face with its own three vertices).
+void icosphereSoup(std::vector<Vec3>& positions, std::vector<Tri>& soup) {
   const TriMesh sphere = test::icosphere(2);
-  std::vector<Vec3> positions;
-  std::vector<Tri> soup;
   for (const Tri& t : sphere.triangles) {
     const int first = static_cast<int>(positions.size());
     for (int v : t) positions.push_back(sphere.positions[v]);
     soup.push_back({first, first + 1, first + 2});
   }
+}
+
+// Issue 20: total curvature on a triangle soup is 0 at every vertex (no face has a neighbour to
+// bend against), and the log says why and what to do instead of writing zeros silently.
+TEST_F(FilterInProcess, TotalCurvatureOfATriangleSoupWarnsToMergeVertices) {
+  std::vector<Vec3> positions;
+  std::vector<Tri> soup;
+  icosphereSoup(positions, soup);
+  MeshModel* mm = addMesh(doc, positions, soup);
+  use("Compute Total Curvature (Normal Cycle) into Vertex Quality");
+  declare(*mm);
+  ASSERT_TRUE(apply()) << logText();
+  for (const auto& v : mm->cm.vert) ASSERT_EQ(v.cQ(), 0.0f);
+  EXPECT_NE(logText().find("320 of the 320 faces share no edge"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("Merge Close Vertices"), std::string::npos) << logText();
+}
+
+// A triangle soup (every face with its own three vertices, as an STL read without merging):
+// valid output with the input's topology (each face a component: the output is the input), and
+// a warning that says what to do.
+TEST_F(FilterInProcess, UniformRemeshOfATriangleSoupWarnsToMergeVertices) {
+  std::vector<Vec3> positions;
+  std::vector<Tri> soup;
+  icosphereSoup(positions, soup);
   use("Remeshing: Geodesic Uniform");
   MeshModel* mm = addMesh(doc, positions, soup);
   declare(*mm);

@@ -43,12 +43,15 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
 void logCountSearch(const SurfaceRemeshResult& r, FilterContext& ctx) {
   if (r.samplingRounds <= 1) return;
   const int got = r.mesh.vertexCount();
-  std::string line = r.centroidalRescue ? "The first sampling's repair added more than 10% of the count (or, on a "
-                                          "refined surface, its output crossed "
-                                          "itself), so the sampling was redone with the samples moved by 3 geodesic "
-                                          "Lloyd iterations, then with fewer "
-                                          "if needed: "
-                                        : "The repair added samples, so the sampling was redone with fewer: ";
+  std::string line =
+      r.centroidalRescue
+          ? "The first sampling's repair added more than " +
+                formatNumber(100 * SurfaceRemeshParams::kRescueShare, "%g") +
+                "% of the count (or, on a refined surface, its output crossed itself), so the sampling was redone "
+                "with the samples moved by " +
+                std::to_string(SurfaceRemeshParams::kRescueCentroidalIterations) +
+                " geodesic Lloyd iterations, then with fewer if needed: "
+          : std::string("The repair added samples, so the sampling was redone with fewer: ");
   line += count(r.samplingRounds) + " samplings, the output closest to the " + count(r.countAsked) +
           " vertices asked for kept (" + count(r.sampledAsked) + " samples asked of the sampling)";
   if (got > r.countAsked && r.fewestCount > 0)

@@ -381,7 +381,7 @@ Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvaturePar
   }
   result.meanNeighbourhoodSize = double(totalSize) / n;
   result.looseFaces = mesh.looseFaceCount();
-  result.looksLikeTriangleSoup = mesh.looksLikeTriangleSoup();
+  result.looksLikeTriangleSoup = TriMesh::looksLikeTriangleSoup(result.looseFaces, mesh.faceCount());
   progress.report(1.0, "Curvature");
   return result;
 }

@@ -305,11 +305,6 @@ int TriMesh::looseFaceCount() const {
   return loose;
 }
 
-bool TriMesh::looksLikeTriangleSoup() const {
-  const int loose = looseFaceCount();
-  return loose > 0 && 10 * loose >= faceCount();
-}
-
 double TriMesh::meanEdgeLength() const {
   if (triangles.empty()) return 0.0;
   double sum = 0.0;

@@ -79,9 +79,12 @@ struct TriMesh {
   double meanEdgeLength() const;
   /// Faces with no neighbour across any of their edges (a triangle soup: all of them). O(F).
   int looseFaceCount() const;
-  /// At least 10% of the faces are loose: an STL read without merging its vertices, whose
-  /// algorithms see separate triangles (the filters say so and name MeshLab's remedy).
-  bool looksLikeTriangleSoup() const;
+  /// Whether `looseFaces` (looseFaceCount()) of `faceCount` faces make a triangle soup: at least
+  /// 10% of them, as an STL read without merging its vertices gives (the filters say so and name
+  /// MeshLab's remedy).
+  static bool looksLikeTriangleSoup(int looseFaces, int faceCount) {
+    return looseFaces > 0 && 10 * looseFaces >= faceCount;
+  }
 };
 
 /// Builds the adjacency and topology of a triangle mesh.

@@ -22,11 +22,6 @@
 namespace gr {
 namespace {
 
-/// A first sampling whose repair added more than this share of the count asked for is redone at the same count with kRescueCentroidalIterations geodesic
-/// Lloyd iterations before any count is cut (sampleToCount).
-constexpr double kRescueShare = 0.1;
-constexpr int kRescueCentroidalIterations = 3;
-
 /// Seconds since `start`, and restarts it.
 double lap(std::chrono::steady_clock::time_point& start) {
   const auto now = std::chrono::steady_clock::now();
@@ -145,10 +140,11 @@ struct SampledDual {
 };
 
 /// The relaxation of d's dual. A centroidal sampling's (whose relaxation aims at regular
-/// triangles, RelaxationParams::regularised) gets fewer rounds (half, then none) when the relaxed
-/// output has crossing faces and the triangulation before it had none: on a thin plate a vertex moved over
-/// the plate's rim folds a face onto the other side (the CAD gear of tests/support/cad_meshes.h
-/// at 104 centroidal samples, 3 rounds: 3 crossing faces; none without them).
+/// triangles, RelaxationParams::regularised) gets fewer rounds (half, then none) when the
+/// relaxed output has crossing faces and the triangulation before it had none: on a thin plate a
+/// vertex moved over the plate's rim folds a face onto the other side (the CAD gear of
+/// tests/support/cad_meshes.h at 104 centroidal samples, 3 rounds: 3 crossing faces; none
+/// without them).
 Status relaxWithoutCrossing(const FrontSurface& front, const TriMesh& surface, const SurfaceRemeshParams& params,
                             SampledDual& d, RemeshStageTimes& times) {
   if (params.centroidalIterations == 0 || params.relaxation.iterations == 0)
@@ -230,7 +226,7 @@ std::pair<bool, int> miss(const SampledDual& d, int target) {
 }
 
 /// Whether a first sampling that missed the count is worth a centroidal one at the same count:
-/// the repair added more than kRescueShare of the count, or, on a surface whose triangles were
+/// the repair added more than SurfaceRemeshParams::kRescueShare of the count, or, on a surface whose triangles were
 /// poor (refined: CAD exports, thin plates), the output crosses itself. There the Voronoi cells of
 /// farthest points wrap around the plates' rims (the gear of tests/support/cad_meshes.h: 104
 /// asked, about 110 added, or 105 with crossing faces from another first vertex); Lloyd's cells
@@ -240,16 +236,16 @@ std::pair<bool, int> miss(const SampledDual& d, int target) {
 /// was centroidal already).
 bool rescuable(const SurfaceRemeshParams& params, bool refined, bool crossing, int got, int target) {
   return params.centroidalIterations == 0 && target > 0 &&
-         (got - target > kRescueShare * target || (refined && crossing));
+         (got - target > SurfaceRemeshParams::kRescueShare * target || (refined && crossing));
 }
 
 /// Issue 20: when the repair of the triangulation added samples, the sampling is redone with
 /// fewer so that the output lands at the count asked for, at most kMaxSamplingRounds samplings in
 /// all; of the valid results the one closest to the count without crossing faces is kept (the
 /// first of equals; with crossings only if all have some). Before any count is cut, a first
-/// sampling that the repair grew by more than kRescueShare is redone at the same count with centroidal (Lloyd) iterations, which move samples instead of
-/// adding them (rescuable; one of the kMaxSamplingRounds samplings). A redo that fails (the repair does not
-/// converge from too few samples) ends the search with the best so far; so does an output with no
+/// sampling that calls for it (rescuable) is redone at the same count with centroidal (Lloyd)
+/// iterations, which move samples instead of adding them (one of the kMaxSamplingRounds
+/// samplings, kept on only if closer). A redo that fails (the repair does not converge from too few samples) ends the search with the best so far; so does an output with no
 /// crossing faces at the count or above it by at most countTolerance. Without a count (spacing
 /// only), or when the first sampling lands on it, one sampling.
 Expected<SampledDual> sampleToCount(FastMarcher& marcher, const FrontSurface& front, const TriMesh& surface,
@@ -284,7 +280,7 @@ Expected<SampledDual> sampleToCount(FastMarcher& marcher, const FrontSurface& fr
     if (!runMiss.first && got >= target && got - target <= params.countTolerance * target) break;
     if (round == 0 && rescuable(params, front.geodesic.refined, runMiss.first, got, target)) {
       // Samples moved rather than added: the same count again, centroidal.
-      roundParams.centroidalIterations = kRescueCentroidalIterations;
+      roundParams.centroidalIterations = SurfaceRemeshParams::kRescueCentroidalIterations;
       r.centroidalRescue = true;
       firstMiss = runMiss;
       firstGot = got;
@@ -403,7 +399,7 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   r.flippedEdges = dual.flippedEdges;
   r.reorientedFaces = static_cast<int>(std::count(oriented->flipped.begin(), oriented->flipped.end(), 1));
   r.looseFaces = input.looseFaceCount();
-  r.looksLikeTriangleSoup = input.looksLikeTriangleSoup();
+  r.looksLikeTriangleSoup = TriMesh::looksLikeTriangleSoup(r.looseFaces, input.faceCount());
   lap(clock);
   if (params.measure)
     if (Status s = measureOutput(input, r, progress.sub(remeshShare, 1.0)); !s) return s;

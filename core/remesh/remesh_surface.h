@@ -59,6 +59,11 @@ struct SurfaceRemeshParams {
   /// Samplings at most when the repair of the triangulation adds samples: the first, then redone
   /// with fewer samples to land at the count asked for (sampleToCount in remesh_surface.cpp).
   static constexpr int kMaxSamplingRounds = 4;
+  /// The count search's centroidal rescue (remeshSurface): a first sampling whose repair added
+  /// more than this share of the count (or, on a refined surface, whose output crosses itself)
+  /// is redone at the same count with this many geodesic Lloyd iterations.
+  static constexpr double kRescueShare = 0.1;
+  static constexpr int kRescueCentroidalIterations = 3;
 
   /// The default target count for an input of `vertexCount` vertices (10%, at least 4).
   static int defaultTargetCount(int vertexCount);
@@ -124,9 +129,8 @@ struct SurfaceRemeshResult {
   /// crossing faces (selfIntersectingFaces), from `sampledAsked` samples asked of the sampling.
   /// fewestCount: the fewest output vertices of these samplings' outputs without crossing faces
   /// (0 if none had none); above countAsked, the fewest this surface reached at these settings.
-  /// centroidalRescue: the first sampling's repair added more than 10% of the count (or, on a
-  /// refined surface, its output crossed itself), so the samplings after it were centroidal (3 geodesic Lloyd iterations,
-  /// samples moved instead of added).
+  /// centroidalRescue: the first sampling called for the rescue (kRescueShare), so the samplings
+  /// after it were centroidal (samples moved instead of added).
   int countAsked = 0;
   bool centroidalRescue = false;
   int samplingRounds = 0;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <set>
 #include <string>
 
@@ -156,9 +157,50 @@ bool hasInputTopology(const TriMesh& out, const TriMesh& mesh, const std::vector
          t.boundaryLoops == mesh.topology.boundaryLoops && isolated == 0 && t.inconsistentEdges == 0 && t.isManifold();
 }
 
+/// The cells that break the closed ball property as regions of the front mesh (a cell is its
+/// vertices, the edges and faces between them): a cell that is not one disk (Euler characteristic
+/// other than 1: a ring around a handle or a hole, two pieces), and both cells of a pair of disks
+/// whose union is not a disk (they meet along two arcs). Counted in one pass over the edges and
+/// faces: chi(i u j) = chi(i) + chi(j) - (edges from i to j) + (faces with corners in i and j only).
+std::vector<int> cellsNotClosedBalls(const TriMesh& mesh, const std::vector<int>& cell, int cells) {
+  std::vector<int> chi(cells, 0);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    if (cell[v] >= 0) ++chi[cell[v]];
+  std::map<std::pair<int, int>, int> pairChi;  // per adjacent pair: faces in the pair - edges across it
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c) {
+    const int o = mesh.oppositeCorner[c];
+    if (o >= 0 && o < c) continue;  // each edge once
+    const int a = cell[mesh.vertex(TriMesh::next(c))], b = cell[mesh.vertex(TriMesh::prev(c))];
+    if (a < 0 || b < 0) continue;
+    if (a == b)
+      --chi[a];
+    else
+      --pairChi[std::minmax(a, b)];
+  }
+  for (const Tri& t : mesh.triangles) {
+    std::array<int, 3> k = {cell[t[0]], cell[t[1]], cell[t[2]]};
+    if (k[0] < 0 || k[1] < 0 || k[2] < 0) continue;
+    std::sort(k.begin(), k.end());
+    if (k[0] == k[2])
+      ++chi[k[0]];
+    else if (k[0] == k[1] || k[1] == k[2])
+      ++pairChi[std::minmax(k[0], k[2])];
+  }
+  std::vector<int> bad;
+  for (int c = 0; c < cells; ++c)
+    if (chi[c] != 1) bad.push_back(c);
+  for (const auto& [pair, faceMinusEdge] : pairChi)
+    if (chi[pair.first] == 1 && chi[pair.second] == 1 && 2 + faceMinusEdge != 1) {
+      bad.push_back(pair.first);
+      bad.push_back(pair.second);
+    }
+  return bad;
+}
+
 /// Cells to refine when the dual is valid locally but not of the input's topology (e.g. a handle
 /// not captured, a component with too few cells): the non-empty cells without a triangle, else
-/// the tenth of the cells with the largest distance to their sample (at least one).
+/// the cells that are not closed balls (cellsNotClosedBalls: where the handle is), else the tenth
+/// of the cells with the largest distance to their sample (at least one).
 std::vector<int> cellsToRefineForTopology(const FastMarcher& marcher, const TriMesh& out,
                                           const std::vector<int>& cellSize) {
   const std::vector<int>& cell = marcher.cell();
@@ -166,6 +208,12 @@ std::vector<int> cellsToRefineForTopology(const FastMarcher& marcher, const TriM
   std::vector<int> bad;
   for (int v = 0; v < out.vertexCount(); ++v)
     if (out.valence(v) == 0 && cellSize[v] > 0) bad.push_back(v);
+  if (bad.empty()) {
+    bad = cellsNotClosedBalls(marcher.mesh(), cell, cells);
+    for (int& c : bad)
+      if (cellSize[c] == 0) c = -1;
+    bad.erase(std::remove(bad.begin(), bad.end(), -1), bad.end());
+  }
   if (bad.empty()) {
     std::vector<double> far(cells, 0.0);
     for (int v = 0; v < marcher.mesh().vertexCount(); ++v)

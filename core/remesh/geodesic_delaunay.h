@@ -16,7 +16,10 @@
 // (an output edge with three or more triangles, a non-manifold vertex, a triangle twice, a
 // topology other than the input's), the vertex farthest from the samples inside the offending
 // cells becomes a new sample, the Voronoi diagram is updated incrementally, and the dual is
-// rebuilt; the number of added samples is reported. Last, edges that are not locally Delaunay
+// rebuilt; the number of added samples is reported. When the dual is a manifold of another
+// topology (a handle missed), the offending cells are the ones that are not closed balls, counted
+// by Euler characteristic (a cell that is not one disk, two cells whose union is not one); only
+// if there are none, the tenth of the cells with the largest radius. Last, edges that are not locally Delaunay
 // are flipped (delaunay_flips.h) where that keeps features, orientation and topology.
 // Boundaries: output boundary edges must join samples lying on input boundaries, and a cell
 // that reaches a boundary must have its sample on it (else its farthest boundary vertex is

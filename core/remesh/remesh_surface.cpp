@@ -18,6 +18,7 @@
 #include "core/mesh/orientation.h"
 #include "core/mesh/self_intersection.h"
 #include "core/mesh/subdivide.h"
+#include "core/remesh/remesh_distance.h"
 
 namespace gr {
 namespace {
@@ -299,39 +300,15 @@ Expected<SampledDual> sampleToCount(FastMarcher& marcher, const FrontSurface& fr
   return std::move(*best);
 }
 
-/// Angles of the output and its distance to the input both ways.
+/// Angles of the output and its distance to the input both ways (remesh_distance.h: the remesh's
+/// cells and origins find each sample's nearest point without a grid over the input).
 Status measureOutput(const TriMesh& input, SurfaceRemeshResult& r, Progress progress) {
   r.measures.angles = angleStatistics(r.mesh);
-  // The two directions side by side, one thread each: the output -> input one is mostly the
-  // building of its grid over the input's faces, which one thread does anyway. The input is the
-  // finer mesh: its vertices and centroids sample it densely for the coarser output (2.2 times
-  // fewer queries than with the sides' midpoints).
-  std::optional<std::thread> helper;
-  std::exception_ptr failed;  // an exception may not leave a thread: it is thrown again here
-  const auto toInput = [&] {
-    try {
-      r.measures.toInput = surfaceDistance(r.mesh, input, {}, 1);
-    } catch (...) {
-      failed = std::current_exception();
-    }
-  };
-  try {
-    helper.emplace(toInput);
-  } catch (const std::system_error&) {
-    toInput();  // no thread to be had: one after the other
-  }
-  std::exception_ptr failedHere;  // the helper is joined before anything is thrown
-  try {
-    r.measures.fromInput =
-        surfaceDistance(input, r.mesh, progress, helper ? 1 : 0, DistanceSamples::VerticesAndCentroids);
-  } catch (...) {
-    failedHere = std::current_exception();
-  }
-  if (helper) helper->join();
-  if (failedHere) std::rethrow_exception(failedHere);
-  if (failed) std::rethrow_exception(failed);
-  if (!r.measures.toInput.complete || !r.measures.fromInput.complete) return cancelled();
+  const RemeshDistances d = remeshDistances(input, r.mesh, r.cell, r.origin);
+  r.measures.toInput = d.toInput;
+  r.measures.fromInput = d.fromInput;
   r.measures.inputDiagonal = input.boundingBoxDiagonal();
+  if (!progress.report(1.0, "Surface distance")) return cancelled();
   return Status::ok();
 }
 

@@ -29,7 +29,7 @@
 //
 // Cost: the sampling, O(V log V log n) for V front vertices and n samples, dominates; the
 // refinement (when Auto refines) O((V + points) log V); the triangulation and relaxation are
-// O(V + n); the measure is O(V + F) distance queries.
+// O(V + n); the measure (remesh_distance.h) is O(V + F) local distance evaluations.
 // Nothing is written into the input.
 #pragma once
 

@@ -1,0 +1,277 @@
+#include "core/remesh/remesh_distance.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <optional>
+#include <system_error>
+#include <thread>
+#include <unordered_map>
+#include <utility>
+
+#include "core/mesh/face_geometry.h"
+
+namespace gr {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double distanceToFace(const Vec3& p, const TriMesh& m, int f) {
+  const Tri& t = m.triangles[f];
+  const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
+  const Vec3 w = closestPointBarycentric(p, a, b, c);
+  return (p - (w[0] * a + w[1] * b + w[2] * c)).norm();
+}
+
+/// Every face of a mesh as a bounding sphere (centroid, largest distance to a corner), to skip the
+/// faces that cannot be nearer than the nearest one found.
+struct FaceSpheres {
+  std::vector<Vec3> centre;
+  std::vector<double> radius;
+  explicit FaceSpheres(const TriMesh& m) : centre(m.faceCount()), radius(m.faceCount()) {
+    for (int f = 0; f < m.faceCount(); ++f) {
+      const Tri& t = m.triangles[f];
+      centre[f] = (m.positions[t[0]] + m.positions[t[1]] + m.positions[t[2]]) / 3.0;
+      for (int v : t) radius[f] = std::max(radius[f], (m.positions[v] - centre[f]).norm());
+    }
+  }
+  /// The distance from p to the nearest face of m, by testing every face whose sphere is nearer.
+  double nearest(const Vec3& p, const TriMesh& m, double bound) const {
+    double d = bound;
+    for (int f = 0; f < m.faceCount(); ++f) {
+      const double reach = d + radius[f];
+      if ((p - centre[f]).squaredNorm() < reach * reach) d = std::min(d, distanceToFace(p, m, f));
+    }
+    return d;
+  }
+};
+
+/// Whether face f of the spheres' mesh may be nearer to p than `bound` (its sphere is).
+bool mayBeNearer(const FaceSpheres& spheres, const Vec3& p, int f, double bound) {
+  const double reach = bound + spheres.radius[f];
+  return (p - spheres.centre[f]).squaredNorm() < reach * reach;
+}
+
+/// From face f, steps toward p while a nearer face is found where the nearest point of the current
+/// face says to look: the three faces across its sides if that point is inside it (a crease may
+/// have the nearer face across), else the face across the side it lies on or the faces around the
+/// corner it is, and if none of these is nearer, every face around the three corners. Ends at a local minimum of the distance over the faces (exact where the
+/// surface near p is not folded back). Returns the distance and the face.
+std::pair<double, int> walkToNearest(const Vec3& p, const TriMesh& m, const FaceSpheres& spheres, int f) {
+  for (int steps = 0;; ++steps) {
+    const Tri& t = m.triangles[f];
+    const Vec3 w = closestPointBarycentric(p, m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]);
+    const double d = (p - (w[0] * m.positions[t[0]] + w[1] * m.positions[t[1]] + w[2] * m.positions[t[2]])).norm();
+    const int zeros = (w[0] <= 0.0) + (w[1] <= 0.0) + (w[2] <= 0.0);
+    if (steps == 256) return {d, f};
+    int best = -1;
+    double bestD = d;
+    const auto tryFace = [&](int g) {
+      if (g == f || !mayBeNearer(spheres, p, g, bestD)) return;
+      const double dg = distanceToFace(p, m, g);
+      if (dg < bestD) best = g, bestD = dg;
+    };
+    for (int k = 0; k < 3; ++k) {
+      if (zeros == 0 || (zeros == 1 && w[k] <= 0.0)) {  // inside: all three sides; on the side facing k
+        if (const int o = m.oppositeCorner[3 * f + k]; o >= 0) tryFace(o / 3);
+      } else if (zeros == 2 && w[k] > 0.0) {  // at corner k
+        for (const int* c = m.cornersBegin(t[k]); c != m.cornersEnd(t[k]); ++c) tryFace(*c / 3);
+      }
+    }
+    if (best < 0 && zeros > 0)  // not there (a crease, a saddle): every face around the corners
+      for (int v : t)
+        for (const int* c = m.cornersBegin(v); c != m.cornersEnd(v); ++c) tryFace(*c / 3);
+    if (best < 0) return {d, f};
+    f = best;
+  }
+}
+
+/// Per output vertex, an input face holding its origin.
+std::vector<int> originFace(const TriMesh& input, const std::vector<SurfacePoint>& origin) {
+  std::vector<int> face(origin.size(), -1);
+  for (size_t i = 0; i < origin.size(); ++i) {
+    const SurfacePoint& o = origin[i];
+    if (o.vertex >= 0 && input.cornersBegin(o.vertex) != input.cornersEnd(o.vertex))
+      face[i] = *input.cornersBegin(o.vertex) / 3;
+    else if (o.vertex < 0)
+      face[i] = o.face;
+  }
+  return face;
+}
+
+/// Sample points with an upper bound of their distance to the other surface.
+struct Bounds {
+  std::vector<Vec3> point;
+  std::vector<double> upper;
+
+  void add(const Vec3& p, double d) {
+    point.push_back(p);
+    upper.push_back(d);
+  }
+};
+
+/// Per output face, the input face whose corners lie in its three corners' cells (the face whose
+/// three fronts made it, in the geodesic Delaunay dual), or -1 where there is none (an edge the
+/// Delaunay flips or the relaxation turned).
+std::vector<int> dualFaces(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell) {
+  const auto key = [](std::array<int, 3> c) {
+    std::sort(c.begin(), c.end());
+    return (static_cast<uint64_t>(c[0]) << 42) | (static_cast<uint64_t>(c[1]) << 21) | static_cast<uint64_t>(c[2]);
+  };
+  std::unordered_map<uint64_t, int> faceOfTriple;
+  for (int f = 0; f < input.faceCount(); ++f) {
+    const Tri& t = input.triangles[f];
+    const std::array<int, 3> c = {cell[t[0]], cell[t[1]], cell[t[2]]};
+    if (c[0] >= 0 && c[1] >= 0 && c[2] >= 0 && c[0] != c[1] && c[1] != c[2] && c[0] != c[2])
+      faceOfTriple.emplace(key(c), f);
+  }
+  std::vector<int> dual(output.faceCount(), -1);
+  for (int f = 0; f < output.faceCount(); ++f) {
+    const Tri& t = output.triangles[f];
+    const auto it = faceOfTriple.find(key({t[0], t[1], t[2]}));
+    if (it != faceOfTriple.end()) dual[f] = it->second;
+  }
+  return dual;
+}
+
+/// The output's vertices, against the input face holding their origin (they lie on it), and per
+/// face its centroid, walked over the input's faces (walkToNearest) from the face's dual input
+/// face (dualFaces) or else from each corner's origin, and the midpoints of its sides, walked from
+/// where the centroid's walk ended and from the side's first corner's origin.
+Bounds outputToInput(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell,
+                     const std::vector<SurfacePoint>& origin) {
+  const std::vector<int> start = originFace(input, origin);
+  const std::vector<int> dual = dualFaces(input, output, cell);
+  const FaceSpheres spheres(input);
+  Bounds b;
+  for (int i = 0; i < output.vertexCount(); ++i)
+    b.add(output.positions[i], start[i] >= 0 ? distanceToFace(output.positions[i], input, start[i]) : kInf);
+  for (int f = 0; f < output.faceCount(); ++f) {
+    const Tri& t = output.triangles[f];
+    const Vec3 &p = output.positions[t[0]], &q = output.positions[t[1]], &r = output.positions[t[2]];
+    const Vec3 centroid = (p + q + r) / 3.0;
+    std::pair<double, int> nearest = {kInf, -1};
+    if (dual[f] >= 0) {
+      nearest = walkToNearest(centroid, input, spheres, dual[f]);
+    } else {  // the corners' origins may lie on different sides of a thin part: the nearest walk
+      for (int k = 0; k < 3; ++k)
+        if (start[t[k]] >= 0) nearest = std::min(nearest, walkToNearest(centroid, input, spheres, start[t[k]]));
+    }
+    b.add(centroid, nearest.first);
+    for (int k = 0; k < 3; ++k) {  // the side from corner k: from the centroid's face and from k's origin
+      const Vec3 x = 0.5 * (output.positions[t[k]] + output.positions[t[(k + 1) % 3]]);
+      double d = nearest.second >= 0 ? walkToNearest(x, input, spheres, nearest.second).first : kInf;
+      if (start[t[k]] >= 0) d = std::min(d, walkToNearest(x, input, spheres, start[t[k]]).first);
+      b.add(x, d);
+    }
+  }
+  return b;
+}
+
+/// The input's vertices and face centroids, each against the output triangles around the output
+/// vertices of its cells.
+Bounds inputToOutput(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell) {
+  const FaceSpheres spheres(output);
+  Bounds b;
+  std::vector<int> faces;
+  const auto addRing = [&](int c) {
+    if (c < 0 || c >= output.vertexCount()) return;
+    for (const int* k = output.cornersBegin(c); k != output.cornersEnd(c); ++k) faces.push_back(*k / 3);
+  };
+  const auto add = [&](const Vec3& p) {
+    double d = kInf;
+    for (int f : faces)
+      if (mayBeNearer(spheres, p, f, d)) d = std::min(d, distanceToFace(p, output, f));
+    b.add(p, d);
+  };
+  for (int v = 0; v < input.vertexCount(); ++v) {
+    faces.clear();
+    addRing(cell[v]);
+    add(input.positions[v]);
+  }
+  for (const Tri& t : input.triangles) {
+    faces.clear();
+    addRing(cell[t[0]]);
+    if (cell[t[1]] != cell[t[0]]) addRing(cell[t[1]]);
+    if (cell[t[2]] != cell[t[0]] && cell[t[2]] != cell[t[1]]) addRing(cell[t[2]]);
+    const Vec3 &p = input.positions[t[0]], &q = input.positions[t[1]], &r = input.positions[t[2]];
+    add((p + q + r) / 3.0);
+  }
+  return b;
+}
+
+/// The exact largest distance, from the bounds taken largest first (see the header), and the RMS
+/// of the bounds (exact ones where measured). Empty if more than kMaxExactQueries were needed.
+std::optional<SurfaceDistance> certify(const Bounds& b, const TriMesh& to, int& queries) {
+  SurfaceDistance d;
+  if (b.point.empty()) return d;
+  const FaceSpheres spheres(to);
+  std::vector<std::pair<double, int>> heap(b.point.size());
+  double sumSq = 0.0;
+  for (size_t q = 0; q < b.point.size(); ++q) {
+    heap[q] = {b.upper[q], static_cast<int>(q)};
+    sumSq += b.upper[q] * b.upper[q];
+  }
+  std::make_heap(heap.begin(), heap.end());
+  double best = 0.0;
+  for (int exact = 0; !heap.empty(); ++exact) {
+    std::pop_heap(heap.begin(), heap.end());
+    const auto [upper, q] = heap.back();
+    heap.pop_back();
+    if (upper <= best) break;
+    if (exact == kMaxExactQueries) return std::nullopt;
+    const double e = spheres.nearest(b.point[q], to, upper);
+    ++queries;
+    best = std::max(best, e);
+    if (std::isfinite(upper)) sumSq -= upper * upper - e * e;
+  }
+  d.max = best;
+  d.rms = std::sqrt(std::max(0.0, sumSq) / b.point.size());
+  return d;
+}
+
+}  // namespace
+
+RemeshDistances remeshDistances(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell,
+                                const std::vector<SurfacePoint>& origin) {
+  RemeshDistances r;
+  if (input.faceCount() == 0 || output.faceCount() == 0) return r;
+  int toQueries = 0, fromQueries = 0;
+  bool toGrid = false;
+  std::exception_ptr failed;  // an exception may not leave a thread: it is thrown again here
+  const auto toInput = [&] {
+    try {
+      const std::optional<SurfaceDistance> d =
+          certify(outputToInput(input, output, cell, origin), input, toQueries);
+      toGrid = !d;
+      r.toInput = d ? *d : surfaceDistance(output, input, {}, 1);
+    } catch (...) {
+      failed = std::current_exception();
+    }
+  };
+  std::optional<std::thread> helper;
+  try {
+    helper.emplace(toInput);
+  } catch (const std::system_error&) {
+    toInput();  // no thread to be had: one after the other
+  }
+  std::exception_ptr failedHere;  // the helper is joined before anything is thrown
+  try {
+    const std::optional<SurfaceDistance> d = certify(inputToOutput(input, output, cell), output, fromQueries);
+    r.gridDirections += !d;
+    r.fromInput = d ? *d : surfaceDistance(input, output, {}, helper ? 1 : 0, DistanceSamples::VerticesAndCentroids);
+  } catch (...) {
+    failedHere = std::current_exception();
+  }
+  if (helper) helper->join();
+  if (failedHere) std::rethrow_exception(failedHere);
+  if (failed) std::rethrow_exception(failed);
+  r.gridDirections += toGrid;
+  r.exactQueries = toQueries + fromQueries;
+  return r;
+}
+
+}  // namespace gr

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <limits>
 #include <optional>
@@ -244,8 +244,7 @@ RemeshDistances remeshDistances(const TriMesh& input, const TriMesh& output, con
   std::exception_ptr failed;  // an exception may not leave a thread: it is thrown again here
   const auto toInput = [&] {
     try {
-      const std::optional<SurfaceDistance> d =
-          certify(outputToInput(input, output, cell, origin), input, toQueries);
+      const std::optional<SurfaceDistance> d = certify(outputToInput(input, output, cell, origin), input, toQueries);
       toGrid = !d;
       r.toInput = d ? *d : surfaceDistance(output, input, {}, 1);
     } catch (...) {

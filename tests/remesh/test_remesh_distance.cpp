@@ -28,10 +28,11 @@ void expectAsTheGrid(const std::string& name, const TriMesh& input, double fract
   const RemeshDistances d = remeshDistances(input, r->mesh, r->cell, r->origin);
   const SurfaceDistance to = surfaceDistance(r->mesh, input);
   const SurfaceDistance from = surfaceDistance(input, r->mesh, {}, 0, DistanceSamples::VerticesAndCentroids);
-  std::printf("%s at %.0f%%: to the input max %.6g (grid %.6g) rms %.6g (%.6g); from it max %.6g (%.6g) rms %.6g "
-              "(%.6g); %d exact queries, %d directions by the grid\n",
-              name.c_str(), 100 * fraction, d.toInput.max, to.max, d.toInput.rms, to.rms, d.fromInput.max, from.max,
-              d.fromInput.rms, from.rms, d.exactQueries, d.gridDirections);
+  std::printf(
+      "%s at %.0f%%: to the input max %.6g (grid %.6g) rms %.6g (%.6g); from it max %.6g (%.6g) rms %.6g "
+      "(%.6g); %d exact queries, %d directions by the grid\n",
+      name.c_str(), 100 * fraction, d.toInput.max, to.max, d.toInput.rms, to.rms, d.fromInput.max, from.max,
+      d.fromInput.rms, from.rms, d.exactQueries, d.gridDirections);
   ASSERT_GT(to.max, 0.0);
   ASSERT_GT(from.max, 0.0);
   EXPECT_NEAR(d.toInput.max, to.max, 1e-9 * to.max);

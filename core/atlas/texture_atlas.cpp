@@ -266,9 +266,8 @@ Status checkAtlasParams(const TriMesh& mesh, const AtlasParams& p) {
                         " edges between faces of opposite orientation); re-orient them first (Filters > Normals, "
                         "Curvatures and Orientation > Re-Orient all faces coherentely)");
   if (!mesh.topology.isManifold())
-    return nonManifold("texture atlas: the mesh has " + std::to_string(mesh.topology.nonManifoldEdges) +
-                       " non-manifold edges and " + std::to_string(mesh.topology.nonManifoldVertices) +
-                       " non-manifold vertices; clean it first (Filters > Cleaning and Repairing)");
+    return nonManifold("texture atlas: the mesh has " + mesh.topology.nonManifoldCounts() +
+                       "; clean it first (Filters > Cleaning and Repairing)");
   return Status::ok();
 }
 

@@ -15,8 +15,8 @@ Expected<std::vector<double>> fieldOf(const TriMesh& mesh, const std::vector<dou
     case AdaptiveField::VertexQuality: return values;
     case AdaptiveField::TotalCurvature: {
       if (!mesh.topology.isManifold())
-        return nonManifold(
-            "the mesh has non-manifold edges or vertices; repair them first (Cleaning and Repairing menu)");
+        return nonManifold("the mesh has " + mesh.topology.nonManifoldCounts() +
+                           "; repair them first (Cleaning and Repairing menu)");
       Expected<CurvatureResult> tau = totalCurvature(mesh, params.curvature, std::move(progress));
       if (!tau) return tau.status();
       radius = tau->radius;

@@ -36,8 +36,7 @@ Status checkInput(const TriMesh& input, const IntrinsicRefinementParams& p) {
   if (input.faceCount() == 0) return invalidInput("intrinsic Delaunay refinement: the mesh has no faces");
   if (!input.topology.isManifold())
     return nonManifold("intrinsic Delaunay refinement needs a manifold mesh; this one has " +
-                       std::to_string(input.topology.nonManifoldEdges) + " non-manifold edges and " +
-                       std::to_string(input.topology.nonManifoldVertices) + " non-manifold vertices");
+                       input.topology.nonManifoldCounts());
   if (!(p.minAngleDegrees >= 0.0 && p.minAngleDegrees < 60.0))
     return invalidInput("intrinsic Delaunay refinement: minAngleDegrees is " + std::to_string(p.minAngleDegrees) +
                         ", it must be in [0, 60)");

@@ -288,6 +288,11 @@ Expected<TriMesh> buildTriMesh(std::vector<Vec3> positions, std::vector<Tri> tri
   return m;
 }
 
+std::string Topology::nonManifoldCounts() const {
+  return std::to_string(nonManifoldEdges) + " non-manifold edges and " + std::to_string(nonManifoldVertices) +
+         " non-manifold vertices";
+}
+
 double TriMesh::boundingBoxDiagonal() const {
   if (positions.empty()) return 0.0;
   Vec3 lo = positions[0], hi = positions[0];

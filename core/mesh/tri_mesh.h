@@ -23,6 +23,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "core/base/status.h"
@@ -50,6 +51,10 @@ struct Topology {
   std::vector<int> nonManifoldVertexList;  ///< the non-manifold vertices, in increasing order
 
   bool isManifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
+  /// "N non-manifold edges and M non-manifold vertices": what every refusal of a non-manifold
+  /// mesh says (two fans of faces meeting at one vertex are as common in CAD exports as edges
+  /// with three faces).
+  std::string nonManifoldCounts() const;
 };
 
 struct TriMesh {

@@ -35,9 +35,8 @@ double lap(std::chrono::steady_clock::time_point& start) {
 Status checkRemeshInput(const TriMesh& input, const SurfaceRemeshParams& params) {
   const Topology& topology = input.topology;
   if (!topology.isManifold())
-    return nonManifold("the mesh has " + std::to_string(topology.nonManifoldEdges) + " non-manifold edges and " +
-                       std::to_string(topology.nonManifoldVertices) +
-                       " non-manifold vertices; repair them first (Cleaning and Repairing menu)");
+    return nonManifold("the mesh has " + topology.nonManifoldCounts() +
+                       "; repair them first (Cleaning and Repairing menu)");
   if (params.refinement < 0 || params.refinement > SurfaceRemeshParams::kMaxRefinement)
     return invalidInput("Refinement must be 0 to " + std::to_string(SurfaceRemeshParams::kMaxRefinement) + ", got " +
                         std::to_string(params.refinement));

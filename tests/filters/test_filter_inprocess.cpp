@@ -795,6 +795,19 @@ TEST_F(FilterInProcess, AdaptiveRemeshBadFieldsLeaveTheDocumentAlone) {
   EXPECT_EQ(doc.meshList.size(), 1) << "a failed filter added a layer";
 }
 
+// A non-manifold vertex (two fans of faces meeting at one vertex, common in CAD exports): the
+// adaptive filter refuses it with the counts, as the uniform one does (it said "non-manifold
+// edges or vertices" without any).
+TEST_F(FilterInProcess, AdaptiveRemeshRefusesANonManifoldVertexWithTheCounts) {
+  for (const char* filter : {"Remeshing: Geodesic Adaptive", "Remeshing: Geodesic Uniform"}) {
+    SCOPED_TRACE(filter);
+    use(filter);
+    MeshModel* bowtie = addMesh(doc, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}}, {{0, 1, 2}, {0, 3, 4}});
+    declare(*bowtie);
+    expectCleanFailure(*bowtie, StatusCode::NonManifold, "0 non-manifold edges and 1 non-manifold vertices");
+  }
+}
+
 // The paper's texture-driven example (3.3): a colour edge (white for x < 0, black beyond) on
 // fandisk; Attractive on the colour gradient gathers vertices along the edge.
 TEST_F(FilterInProcess, AdaptiveRemeshFromColorGradient) {

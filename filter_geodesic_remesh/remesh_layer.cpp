@@ -25,7 +25,7 @@ void logOrientation(const TriMesh& input, const SurfaceRemeshResult& r, FilterCo
 void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshCommit& commit, const QString& label,
                FilterContext& ctx) {
   ctx.log(commit.title + " of " + count(input.vertexCount()) + " vertices, " + count(input.faceCount()) + " faces" +
-          (commit.refinement > 0 && !r.refinedSurface
+          (commit.refinement > 0 && !r.refinedSurface && r.frontVertices > input.vertexCount()
                ? " (fronts on " + count(r.frontVertices) + " vertices, " + count(commit.refinement) + " subdivisions)"
                : std::string()) +
           ": " + count(r.mesh.vertexCount()) + " vertices, " + count(r.mesh.faceCount()) + " faces on the new layer '" +
@@ -71,12 +71,13 @@ void logRefinedSurface(const SurfaceRemeshResult& r, FilterContext& ctx) {
 }
 
 /// A triangle soup comes back as it was: say why, and what helps.
-void warnIfSoup(const TriMesh& input, const SurfaceRemeshResult& r, FilterContext& ctx) {
+void warnIfSoup(const TriMesh& input, const SurfaceRemeshResult& r, int refinement, FilterContext& ctx) {
   if (!r.looksLikeTriangleSoup) return;
   ctx.warn(count(r.looseFaces) + " of the " + count(input.faceCount()) +
            " faces share no edge with another face (separate triangles, as an STL file read without merging "
-           "its vertices gives): each is a component of its own and keeps its three vertices. Run 'Cleaning "
-           "and Repairing > Merge Close Vertices' first to remesh the surface they form.");
+           "its vertices gives): each is a component of its own and keeps its three vertices" +
+           (refinement > 0 ? std::string(" (Refinement is not applied to a soup)") : std::string()) +
+           ". Run 'Cleaning and Repairing > Merge Close Vertices' first to remesh the surface they form.");
 }
 
 /// Relaxation, topology, angles and the distance to the input.
@@ -168,7 +169,7 @@ void commitRemesh(MeshDocument& doc, const CurrentMesh& current, const SurfaceRe
   logCounts(view.mesh, result, commit, label, ctx);
   logCountSearch(result, ctx);
   logRefinedSurface(result, ctx);
-  warnIfSoup(view.mesh, result, ctx);
+  warnIfSoup(view.mesh, result, commit.refinement, ctx);
   logQuality(result, ctx);
   const RemeshStageTimes& t = result.times;
   const double stages = 1e3 * (t.prepare + t.engine + t.sampling + t.triangulation + t.relaxation + t.measure);

@@ -87,11 +87,16 @@ struct FrontSurface {
 Expected<FrontSurface> frontSurface(const TriMesh& surface, const Metric& metric, const SurfaceRemeshParams& params,
                                     Progress progress) {
   FrontSurface f;
-  Expected<GeodesicSurface> geodesic = prepareGeodesicSurface(surface, metric, params.surface, std::move(progress));
+  // A triangle soup is neither refined nor subdivided: each face comes back as it was (with
+  // points inside it, the repair's samples on its sides split it into 2-4 triangles).
+  const bool soup = TriMesh::looksLikeTriangleSoup(surface.looseFaceCount(), surface.faceCount());
+  GeodesicSurfaceParams surfaceParams = params.surface;
+  if (soup) surfaceParams.refinement = SurfaceRefinement::Off;
+  Expected<GeodesicSurface> geodesic = prepareGeodesicSurface(surface, metric, surfaceParams, std::move(progress));
   if (!geodesic) return geodesic.status();
   f.geodesic = std::move(*geodesic);
   if (f.geodesic.refined) return f;
-  Expected<Subdivision> fine = subdivideMidpoint(surface, params.refinement);
+  Expected<Subdivision> fine = subdivideMidpoint(surface, soup ? 0 : params.refinement);
   if (!fine) return fine.status();
   Expected<Metric> fineMetric = transferMetric(metric, surface, fine->origin);
   if (!fineMetric) return fineMetric.status();

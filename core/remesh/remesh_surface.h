@@ -82,7 +82,8 @@ struct SurfaceRemeshParams {
   RelaxationParams relaxation;   ///< tangential relaxation (iterations 0 to kMaxRelaxationRounds)
   /// Midpoint subdivisions of the input the fronts run on (0 to kMaxRefinement): finer cells and
   /// samples between input vertices, about 4x the time per level. Not applied when the fronts run
-  /// on the intrinsic Delaunay refinement (`surface`).
+  /// on the intrinsic Delaunay refinement (`surface`), nor on a triangle soup
+  /// (TriMesh::looksLikeTriangleSoup: its faces come back as they were; `surface` is Off there).
   int refinement = 0;
   /// The surface the fronts run on: the input, or (Auto: where its triangles are poor, e.g. CAD
   /// exports with slivers) its intrinsic Delaunay refinement (geodesic_surface.h).

@@ -957,6 +957,47 @@ TEST_F(FilterInProcess, UniformRemeshOfATriangleSoupWarnsToMergeVertices) {
   EXPECT_NE(logText().find("Merge Close Vertices"), std::string::npos) << logText();
 }
 
+// The soup with Refinement 0, 1 and 2 (issue 20: 2,365 of 2,444 facets came back split into 2-4
+// triangles while the log said each keeps its three vertices; at 0 too, the coarse soup being
+// refined for the fronts): the output's facets are the input's, compared as sets of corner
+// positions.
+TEST_F(FilterInProcess, UniformRemeshOfATriangleSoupWithRefinementGivesItsFacetsBack) {
+  std::vector<Vec3> positions;
+  std::vector<Tri> soup;
+  icosphereSoup(positions, soup);
+  using Facet = std::array<std::array<float, 3>, 3>;
+  const auto facets = [](const std::vector<Vec3>& p, const std::vector<Tri>& tris) {
+    std::vector<Facet> out;
+    for (const Tri& t : tris) {
+      Facet f;
+      for (int k = 0; k < 3; ++k) f[k] = {float(p[t[k]].x()), float(p[t[k]].y()), float(p[t[k]].z())};
+      std::sort(f.begin(), f.end());
+      out.push_back(f);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  for (int refinement : {0, 1, 2}) {
+    SCOPED_TRACE(refinement);
+    use("Remeshing: Geodesic Uniform");
+    MeshModel* mm = addMesh(doc, positions, soup);
+    declare(*mm);
+    params.setValue(filters::param::kTargetVertices, IntValue(100));
+    params.setValue(filters::param::kRefinement, IntValue(refinement));
+    ASSERT_TRUE(apply()) << logText();
+    MeshModel* out = doc.mm();
+    ASSERT_NE(out, mm);
+    std::vector<Vec3> outPositions;
+    for (const auto& v : out->cm.vert) outPositions.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
+    const std::vector<Facet> got = facets(outPositions, faceIndices(*out)), want = facets(positions, soup);
+    ASSERT_EQ(got.size(), want.size());
+    for (size_t i = 0; i < got.size(); ++i) ASSERT_EQ(got[i], want[i]) << "facet " << i;
+    if (refinement > 0) {
+      EXPECT_NE(logText().find("Refinement is not applied to a soup"), std::string::npos) << logText();
+    }
+  }
+}
+
 // A layer with deleted elements, as MeshLab leaves one after "Delete Selected Faces" and
 // "Delete Selected Vertices" (nothing compacted): each filter must give on its live part exactly
 // what it gives on the same mesh stored compactly, whatever the deleted slots hold (a NaN here).

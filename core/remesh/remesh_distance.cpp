@@ -19,10 +19,12 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double distanceToFace(const Vec3& p, const TriMesh& m, int f) {
+/// The distance from p to face f; `bary` receives the barycentric coordinates of the nearest point.
+double distanceToFace(const Vec3& p, const TriMesh& m, int f, Vec3* bary = nullptr) {
   const Tri& t = m.triangles[f];
   const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
   const Vec3 w = closestPointBarycentric(p, a, b, c);
+  if (bary) *bary = w;
   return (p - (w[0] * a + w[1] * b + w[2] * c)).norm();
 }
 
@@ -38,39 +40,38 @@ struct FaceSpheres {
       for (int v : t) radius[f] = std::max(radius[f], (m.positions[v] - centre[f]).norm());
     }
   }
-  /// The distance from p to the nearest face of m, by testing every face whose sphere is nearer.
+  /// Whether face f may be nearer to p than `bound` (its sphere is).
+  bool mayBeNearer(const Vec3& p, int f, double bound) const {
+    const double reach = bound + radius[f];
+    return (p - centre[f]).squaredNorm() < reach * reach;
+  }
+  /// The distance from p to the nearest face of m (at most `bound`), by testing every face whose
+  /// sphere is nearer.
   double nearest(const Vec3& p, const TriMesh& m, double bound) const {
     double d = bound;
-    for (int f = 0; f < m.faceCount(); ++f) {
-      const double reach = d + radius[f];
-      if ((p - centre[f]).squaredNorm() < reach * reach) d = std::min(d, distanceToFace(p, m, f));
-    }
+    for (int f = 0; f < m.faceCount(); ++f)
+      if (mayBeNearer(p, f, d)) d = std::min(d, distanceToFace(p, m, f));
     return d;
   }
 };
 
-/// Whether face f of the spheres' mesh may be nearer to p than `bound` (its sphere is).
-bool mayBeNearer(const FaceSpheres& spheres, const Vec3& p, int f, double bound) {
-  const double reach = bound + spheres.radius[f];
-  return (p - spheres.centre[f]).squaredNorm() < reach * reach;
-}
-
 /// From face f, steps toward p while a nearer face is found where the nearest point of the current
 /// face says to look: the three faces across its sides if that point is inside it (a crease may
 /// have the nearer face across), else the face across the side it lies on or the faces around the
-/// corner it is, and if none of these is nearer, every face around the three corners. Ends at a local minimum of the distance over the faces (exact where the
-/// surface near p is not folded back). Returns the distance and the face.
+/// corner it is, and if none of these is nearer, every face around the three corners. Ends at a
+/// local minimum of the distance over the faces (exact where the surface near p is not folded
+/// back). Returns the distance and the face.
 std::pair<double, int> walkToNearest(const Vec3& p, const TriMesh& m, const FaceSpheres& spheres, int f) {
   for (int steps = 0;; ++steps) {
     const Tri& t = m.triangles[f];
-    const Vec3 w = closestPointBarycentric(p, m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]);
-    const double d = (p - (w[0] * m.positions[t[0]] + w[1] * m.positions[t[1]] + w[2] * m.positions[t[2]])).norm();
+    Vec3 w;
+    const double d = distanceToFace(p, m, f, &w);
     const int zeros = (w[0] <= 0.0) + (w[1] <= 0.0) + (w[2] <= 0.0);
     if (steps == 256) return {d, f};
     int best = -1;
     double bestD = d;
     const auto tryFace = [&](int g) {
-      if (g == f || !mayBeNearer(spheres, p, g, bestD)) return;
+      if (g == f || !spheres.mayBeNearer(p, g, bestD)) return;
       const double dg = distanceToFace(p, m, g);
       if (dg < bestD) best = g, bestD = dg;
     };
@@ -184,7 +185,7 @@ Bounds inputToOutput(const TriMesh& input, const TriMesh& output, const std::vec
   const auto add = [&](const Vec3& p) {
     double d = kInf;
     for (int f : faces)
-      if (mayBeNearer(spheres, p, f, d)) d = std::min(d, distanceToFace(p, output, f));
+      if (spheres.mayBeNearer(p, f, d)) d = std::min(d, distanceToFace(p, output, f));
     b.add(p, d);
   };
   for (int v = 0; v < input.vertexCount(); ++v) {

@@ -31,7 +31,10 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
           ": " + count(r.mesh.vertexCount()) + " vertices, " + count(r.mesh.faceCount()) + " faces on the new layer '" +
           label.toStdString() + "'");
   ctx.log("Samples: " + count(r.sampledCount) + " by farthest-point sampling, " + count(r.addedSamples) +
-          " added to make the triangulation valid (" + count(r.repairRounds) + " rounds)" +
+          " added to make the triangulation valid (" + count(r.repairRounds) + " rounds" +
+          (r.crossingRounds > 0 ? ", " + count(r.crossingRounds) + " of them where output triangles crossed"
+                                : std::string()) +
+          ")" +
           (r.droppedSamples > 0 ? ", " + count(r.droppedSamples) + " left out (nearest to no vertex)" : std::string()) +
           "; covering radius " + formatNumber(r.coveringRadius, "%.4g") +
           (commit.weighted ? " (a travel time: distance over speed)" : std::string()) +
@@ -86,10 +89,22 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
   if (relaxed.iterations > 0)
     ctx.log("Relaxation on the input surface: " + count(relaxed.iterations) + " rounds, " + count(relaxed.moves) +
             " vertex moves, " + count(relaxed.flips) + " flips; " + count(relaxed.fixedVertices) +
-            " vertices kept in place (boundary, creases and corners)");
+            " vertices kept in place (boundary, creases and corners)" +
+            (relaxed.pinnedVertices > 0
+                 ? " and " + count(relaxed.pinnedVertices) + " where moving them made faces cross"
+                 : std::string()) +
+            (relaxed.refusedCrossing > 0
+                 ? "; " + count(relaxed.refusedCrossing) + " moves refused where faces would have crossed"
+                 : std::string()));
   const Topology& topology = r.mesh.topology;
   ctx.log("Topology kept: " + count(topology.components) + " components, genus " + count(topology.genus) + ", " +
-          count(topology.boundaryLoops) + " boundary loops");
+          count(topology.boundaryLoops) + " boundary loops; " +
+          (r.crossingPairs == 0 ? std::string("no faces cross each other")
+                                : count(r.crossingPairs) + " pairs of faces cross each other"));
+  if (r.crossingPairs > 0)
+    ctx.warn(count(r.crossingPairs) +
+             " pairs of output faces cross each other: where the input crosses itself, or where the "
+             "triangulation could not be refined further. 'Select Self Intersecting Faces' shows them.");
   const RemeshMeasures& m = r.measures;
   ctx.log("Angles: standard deviation " + formatNumber(m.angles.stdDegrees, "%.1f") + " deg, smallest " +
           formatNumber(m.angles.minDegrees, "%.1f") + " deg, " + formatNumber(100 * m.angles.shareMinBelow30, "%.2f") +

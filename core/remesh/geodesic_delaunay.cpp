@@ -11,6 +11,7 @@
 
 #include "core/geodesic/fast_marching.h"
 #include "core/mesh/face_geometry.h"
+#include "core/mesh/self_intersection.h"
 #include "core/remesh/delaunay_flips.h"
 
 namespace gr {
@@ -226,6 +227,33 @@ std::vector<int> cellsToRefineForTopology(const FastMarcher& marcher, const TriM
   return bad;
 }
 
+/// The cells to refine where the straight triangles of a valid dual cross each other (an output
+/// that is not embedded: on thin plates a triangle of the top cells cuts through the bottom; at
+/// 30% of a scan a sliver dual triangle folds over its neighbour): the cells of both faces of each
+/// crossing pair. A pair with a cell that holds a vertex where the input itself crosses
+/// (DelaunayParams::mayCross, read on first use into `inputCrossing`) is left alone: the output
+/// may cross where the input does.
+std::vector<int> crossingCells(const TriMesh& out, const TriMesh& mesh, const std::vector<int>& cell,
+                               const DelaunayParams& params, std::vector<char>& inputCrossing) {
+  const std::vector<std::pair<int, int>> pairs = selfIntersectingFaces(out);
+  if (pairs.empty()) return {};
+  if (inputCrossing.empty()) inputCrossing = params.mayCross ? params.mayCross() : crossingVertices(mesh);
+  if (static_cast<int>(inputCrossing.size()) != mesh.vertexCount()) inputCrossing.assign(mesh.vertexCount(), 1);
+  std::vector<char> excused(out.vertexCount(), 0);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    if (inputCrossing[v] && cell[v] >= 0) excused[cell[v]] = 1;
+  std::vector<int> bad;
+  for (const auto& [f, g] : pairs) {
+    const Tri &a = out.triangles[f], &b = out.triangles[g];
+    const bool nearInputCrossing =
+        excused[a[0]] || excused[a[1]] || excused[a[2]] || excused[b[0]] || excused[b[1]] || excused[b[2]];
+    if (nearInputCrossing) continue;
+    bad.insert(bad.end(), a.begin(), a.end());
+    bad.insert(bad.end(), b.begin(), b.end());
+  }
+  return bad;
+}
+
 /// Renumbers a valid dual without its isolated vertices (the samples of empty cells), in the
 /// mesh, in r.origin and in r.cell (the input vertices' cells).
 Status dropEmptyCells(TriMesh& out, const std::vector<Vec3>& positions, const std::vector<SurfacePoint>& samples,
@@ -371,6 +399,8 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
   const std::vector<char> onBoundary = boundaryVertexFlags(mesh);
   const int initialCount = static_cast<int>(samples.size());
   if (Status s = sampleUnreachedComponents(marcher, samples); !s) return s;
+  int crossingRounds = 0;
+  std::vector<char> inputCrossing;  // crossingCells: per vertex of `mesh`, where the input crosses itself
   for (int round = 0;; ++round) {
     const std::vector<int>& cell = marcher.cell();
     const int cells = static_cast<int>(samples.size());
@@ -381,6 +411,13 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
     // Components without any triangle (one cell covers a whole component) are defects too.
     Expected<TriMesh> out = dual.triangles.empty() ? Expected<TriMesh>(invalidInput("no triangle"))
                                                    : buildTriMesh(positions, dual.triangles);
+    bool valid = false;  // a mesh of the input's topology, which may still cross itself
+    const auto finishValid = [&]() -> Expected<DelaunayResult> {
+      Expected<DelaunayResult> r =
+          finishValidDual(std::move(out).value(), positions, samples, marcher.cell(), params, initialCount, round);
+      if (r) r->crossingRounds = crossingRounds;
+      return r;
+    };
     // A cell that reaches the input's boundary must have its sample on it.
     std::vector<char> sampleOnBoundary(cells, 0);
     for (int c = 0; c < cells; ++c) sampleOnBoundary[c] = samples[c].vertex >= 0 && onBoundary[samples[c].vertex];
@@ -393,8 +430,11 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
       std::vector<int> cellSize(cells, 0);
       for (int v = 0; v < mesh.vertexCount(); ++v)
         if (cell[v] >= 0) ++cellSize[cell[v]];
-      if (bad.empty() && hasInputTopology(*out, mesh, cellSize))
-        return finishValidDual(std::move(out).value(), positions, samples, cell, params, initialCount, round);
+      valid = bad.empty() && hasInputTopology(*out, mesh, cellSize);
+      if (valid && crossingRounds < params.maxCrossingRounds)
+        bad = crossingCells(*out, mesh, cell, params, inputCrossing);
+      if (valid && (bad.empty() || round >= params.maxRepairRounds)) return finishValid();
+      if (valid) ++crossingRounds;
       if (bad.empty()) bad = cellsToRefineForTopology(marcher, *out, cellSize);
     } else {
       for (int c = 0; c < cells; ++c) bad.push_back(c);
@@ -407,6 +447,7 @@ Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<Surf
     if (!progress.report(1.0 - std::pow(0.9, round + 1), "Geodesic Delaunay repair")) return cancelled();
     const Expected<int> added = addRefinementSamples(marcher, samples, std::move(bad), onBoundary);
     if (!added) return added.status();
+    if (*added == 0 && valid) return finishValid();  // crossing cells that cannot be refined: kept as they are
     if (*added == 0)
       return Status{StatusCode::NotConverged,
                     "the geodesic Delaunay triangulation is invalid and no cell can be refined"};

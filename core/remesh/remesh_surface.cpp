@@ -4,7 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -115,16 +117,17 @@ Status originsOnSurface(const GeodesicSurface& geodesic, std::vector<SurfacePoin
 
 /// The relaxation, on the subdivision (unrefined) or on the oriented input `surface` (refined: the
 /// triangulation's origins are mapped to it first; the refined mesh's faces are chords, not the
-/// surface).
+/// surface), `guard` constraining some output vertices.
 Status relaxDual(const FrontSurface& front, const TriMesh& surface, const SurfaceRemeshParams& params,
-                 DelaunayResult& triangulation, RelaxationResult& result, RemeshStageTimes& times) {
+                 DelaunayResult& triangulation, RelaxationResult& result, RemeshStageTimes& times,
+                 const RelaxationGuard& guard) {
   auto clock = std::chrono::steady_clock::now();
   if (front.geodesic.refined)
     if (Status s = originsOnSurface(front.geodesic, triangulation.origin); !s) return s;
   const TriMesh& relaxOn = front.geodesic.refined ? surface : front.fine->mesh;
   Expected<RelaxationResult> relaxed =
       relaxOnSurface(triangulation.mesh, triangulation.origin, relaxOn,
-                     params.centroidalIterations > 0 ? params.relaxation.regularised() : params.relaxation);
+                     params.centroidalIterations > 0 ? params.relaxation.regularised() : params.relaxation, guard);
   if (!relaxed) return relaxed.status();
   result = *relaxed;
   times.relaxation += lap(clock);
@@ -139,29 +142,81 @@ struct SampledDual {
   RelaxationResult relaxation;
   int requested = 0;
   std::optional<bool> crossing;  ///< known when the relaxation had to check it
+  int crossingPairs = 0;         ///< pairs of crossing faces of the output (relaxWithoutCrossing counts them)
 };
 
-/// The relaxation of d's dual. A centroidal sampling's (whose relaxation aims at regular
-/// triangles, RelaxationParams::regularised) gets fewer rounds (half, then none) when the
-/// relaxed output has crossing faces and the triangulation before it had none: on a thin plate a
-/// vertex moved over the plate's rim folds a face onto the other side (the CAD gear of
-/// tests/support/cad_meshes.h at 104 centroidal samples, 3 rounds: 3 crossing faces; none
-/// without them).
+/// The relaxation of d's dual, kept from making its faces cross: a relaxed output with crossing
+/// pairs (selfIntersectingFaces) is relaxed again from the triangulation, the corners of its
+/// crossing faces and their neighbours watched (their moves refused where faces would cross:
+/// RelaxationGuard), up to kWatchRounds times; then with those corners pinned, up to kPinRounds
+/// times; then not at all. The first output without crossing pairs is kept, else the one with the
+/// fewest (the first of equals). On a thin plate a vertex moved over the plate's rim folds a face
+/// onto the other side (the CAD gear of tests/support/cad_meshes.h at 104 centroidal samples: 3
+/// crossing faces); at 30% of a scan a vertex slides over a fold of the surface (bunny00: 2
+/// pairs). Pinning alone kept the triangulation's slivers there (bunny00: 0.5 degrees).
 Status relaxWithoutCrossing(const FrontSurface& front, const TriMesh& surface, const SurfaceRemeshParams& params,
                             SampledDual& d, RemeshStageTimes& times) {
-  if (params.centroidalIterations == 0 || params.relaxation.iterations == 0)
-    return relaxDual(front, surface, params, d.dual, d.relaxation, times);
+  constexpr int kWatchRounds = 2, kPinRounds = 4;
   const DelaunayResult unrelaxed = d.dual;
-  SurfaceRemeshParams fewer = params;
-  for (int rounds = params.relaxation.iterations;; rounds /= 2) {
-    fewer.relaxation.iterations = rounds;
-    if (Status s = relaxDual(front, surface, fewer, d.dual, d.relaxation, times); !s) return s;
-    d.crossing = !selfIntersectingFaces(d.dual.mesh, 1).empty();
-    if (rounds == 0 || !*d.crossing) return Status::ok();
-    if (rounds == params.relaxation.iterations && !selfIntersectingFaces(unrelaxed.mesh, 1).empty())
-      return Status::ok();  // it crossed before the relaxation: fewer rounds would not help
+  const int n = unrelaxed.mesh.vertexCount();
+  RelaxationGuard guard;
+  std::optional<SampledDual> best;
+  SurfaceRemeshParams none = params;
+  none.relaxation.iterations = 0;
+  for (int round = 0; round <= kPinRounds + 1; ++round) {
+    const bool relax = round <= kPinRounds && params.relaxation.iterations > 0;
+    if (Status s = relaxDual(front, surface, relax ? params : none, d.dual, d.relaxation, times, guard); !s) return s;
+    const std::vector<std::pair<int, int>> pairs = selfIntersectingFaces(d.dual.mesh);
+    d.crossing = !pairs.empty();
+    d.crossingPairs = static_cast<int>(pairs.size());
+    if (!best || d.crossingPairs < best->crossingPairs) best = d;
+    if (pairs.empty() || !relax) break;
+    std::vector<char>& flags = round < kWatchRounds ? guard.watched : guard.pinned;
+    flags.resize(n, 0);
+    for (const auto& [f, g] : pairs)
+      for (int face : {f, g})
+        for (int v : d.dual.mesh.triangles[face]) {
+          flags[v] = 1;
+          if (round < kWatchRounds)
+            for (const int* c = d.dual.mesh.cornersBegin(v); c != d.dual.mesh.cornersEnd(v); ++c)
+              flags[d.dual.mesh.vertex(TriMesh::next(*c))] = 1;
+        }
     d.dual = unrelaxed;
   }
+  d = std::move(*best);
+  return Status::ok();
+}
+
+/// The triangulation of d's samples (the marcher holds their field) and its relaxation. The
+/// triangulation's crossing repair (DelaunayParams::maxCrossingRounds) comes second: first
+/// without it, since the relaxation undoes most crossings of a dual (the CAD gear at 104 samples:
+/// none left, where refining the crossing cells first added samples and the count search then
+/// landed at 87); only if the relaxed output still crosses are the samples triangulated again
+/// (their field restored by one front) with the repair, and relaxed.
+Status triangulateAndRelax(FastMarcher& marcher, const FrontSurface& front, const TriMesh& surface,
+                           const SurfaceRemeshParams& params, SampledDual& d, Progress progress,
+                           RemeshStageTimes& times) {
+  DelaunayParams triangulation = params.triangulation;
+  for (const bool repairCrossings : {false, true}) {
+    if (repairCrossings && (d.crossingPairs == 0 || params.triangulation.maxCrossingRounds == 0)) break;
+    auto clock = std::chrono::steady_clock::now();
+    if (repairCrossings) {
+      marcher.reset();
+      for (size_t i = 0; i < d.sampling.origin.size(); ++i)
+        if (Status s = marcher.addSource(d.sampling.origin[i], static_cast<int>(i)); !s) return s;
+      if (Status s = marcher.propagate(); !s) return s;
+    }
+    triangulation.maxCrossingRounds = repairCrossings ? params.triangulation.maxCrossingRounds : 0;
+    const double from = repairCrossings ? 0.5 : 0.0;
+    Expected<DelaunayResult> dual =
+        geodesicDelaunay(marcher, d.sampling.origin, triangulation, progress.sub(from, from + 0.4));
+    if (!dual) return dual.status();
+    d.dual = std::move(*dual);
+    times.triangulation += lap(clock);
+    if (!progress.report(from + 0.4, "Relaxation")) return cancelled();
+    if (Status s = relaxWithoutCrossing(front, surface, params, d, times); !s) return s;
+  }
+  return Status::ok();
 }
 
 /// One sampling of `request` samples, the triangulation of its Voronoi diagram on the same engine
@@ -198,13 +253,7 @@ Expected<SampledDual> sampleAndTriangulate(FastMarcher& marcher, const FrontSurf
     d.sampling.origin = std::move(relaxed->seeds);  // the marcher holds their cells, 0..n-1 in order
   }
   times.sampling += lap(clock);
-  Expected<DelaunayResult> dual =
-      geodesicDelaunay(marcher, d.sampling.origin, params.triangulation, progress.sub(0.7, 0.95));
-  if (!dual) return dual.status();
-  d.dual = std::move(*dual);
-  times.triangulation += lap(clock);
-  if (!progress.report(0.95, "Relaxation")) return cancelled();
-  if (Status s = relaxWithoutCrossing(front, surface, params, d, times); !s) return s;
+  if (Status s = triangulateAndRelax(marcher, front, surface, params, d, progress.sub(0.7, 1.0), times); !s) return s;
   return d;
 }
 
@@ -327,6 +376,29 @@ std::vector<SurfacePoint> originsOnInput(const std::vector<SurfacePoint>& onFron
   return origin;
 }
 
+/// DelaunayParams::mayCross on the intrinsic refinement: its vertices on a crossing face of the
+/// input (the refinement's own straight triangles may cross where the input's do not). Computed
+/// once, on the first call, and kept for the samplings after it.
+std::function<std::vector<char>()> inputCrossingsOnRefinement(const TriMesh& surface, const FrontSurface& front) {
+  auto cached = std::make_shared<std::vector<char>>();
+  return [&surface, &front, cached]() {
+    if (!cached->empty()) return *cached;
+    std::vector<char> crossingFace(surface.faceCount(), 0), crossingVertex(surface.vertexCount(), 0);
+    for (const auto& [f, g] : selfIntersectingFaces(surface))
+      for (int face : {f, g}) {
+        crossingFace[face] = 1;
+        for (int v : surface.triangles[face]) crossingVertex[v] = 1;
+      }
+    const int n = front.mesh().vertexCount();
+    cached->assign(n, 0);
+    for (int v = 0; v < n; ++v) {
+      const SurfacePoint p = front.geodesic.origin(v);
+      (*cached)[v] = p.vertex >= 0 ? crossingVertex[p.vertex] : crossingFace[p.face];
+    }
+    return *cached;
+  };
+}
+
 }  // namespace
 
 int SurfaceRemeshParams::defaultTargetCount(int vertexCount) {
@@ -357,7 +429,9 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   r.times.engine = lap(clock);
 
   const Progress remeshing = progress.sub(front->geodesic.refined ? 0.1 * remeshShare : 0.0, remeshShare);
-  Expected<SampledDual> sampled = sampleToCount(marcher, *front, surface, params, remeshing, r);
+  SurfaceRemeshParams searchParams = params;
+  if (front->geodesic.refined) searchParams.triangulation.mayCross = inputCrossingsOnRefinement(surface, *front);
+  Expected<SampledDual> sampled = sampleToCount(marcher, *front, surface, searchParams, remeshing, r);
   if (!sampled) return sampled.status();
   const FpsResult& sampling = sampled->sampling;
   DelaunayResult& dual = sampled->dual;
@@ -374,6 +448,8 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   r.addedSamples = dual.addedSamples;
   r.droppedSamples = dual.droppedSamples;
   r.repairRounds = dual.repairRounds;
+  r.crossingRounds = dual.crossingRounds;
+  r.crossingPairs = sampled->crossingPairs;
   r.flippedEdges = dual.flippedEdges;
   r.reorientedFaces = static_cast<int>(std::count(oriented->flipped.begin(), oriented->flipped.end(), 1));
   r.looseFaces = input.looseFaceCount();

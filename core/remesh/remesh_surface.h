@@ -142,8 +142,15 @@ struct SurfaceRemeshResult {
   int addedSamples = 0;         ///< samples the repair of the triangulation added
   int droppedSamples = 0;       ///< samples inside faces left out (nearest to no vertex)
   int repairRounds = 0;
+  /// Of repairRounds, those that added samples where output triangles crossed each other
+  /// (DelaunayParams::maxCrossingRounds).
+  int crossingRounds = 0;
   int flippedEdges = 0;  ///< edges flipped to make the triangulation locally Delaunay
+  /// The relaxation; its pinnedVertices stayed in place because moving them made faces cross.
   RelaxationResult relaxation;
+  /// Pairs of output faces that cross each other (selfIntersectingFaces, folds included): 0 unless
+  /// the input crosses itself there or the triangulation could not be refined enough.
+  int crossingPairs = 0;
   int reorientedFaces = 0;  ///< input faces the work copy flipped to orient the surface coherently
   /// Whether the fronts ran on the intrinsic Delaunay refinement of the input (geodesic_surface.h:
   /// Auto refines CAD-like meshes with slivers or caps), and the points it inserted.

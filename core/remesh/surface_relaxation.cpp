@@ -10,6 +10,7 @@
 
 #include "core/base/math.h"
 #include "core/mesh/face_geometry.h"
+#include "core/mesh/self_intersection.h"
 
 namespace gr {
 namespace {
@@ -219,8 +220,25 @@ std::vector<char> fixedVertices(const TriMesh& output, const std::vector<Surface
 /// Moves the free vertices of the output, one at a time, on the input surface.
 class Relaxer {
  public:
-  Relaxer(TriMesh& output, std::vector<SurfacePoint>& points, const SurfaceWalker& walker, double maxDeviation)
-      : output_(output), pos_(output.positions), points_(points), walker_(walker), maxDeviation_(maxDeviation) {}
+  Relaxer(TriMesh& output, std::vector<SurfacePoint>& points, const SurfaceWalker& walker, double maxDeviation,
+          const std::vector<char>& watched)
+      : output_(output),
+        pos_(output.positions),
+        points_(points),
+        walker_(walker),
+        maxDeviation_(maxDeviation),
+        watched_(watched) {}
+
+  /// The faces with a watched corner, which a watched vertex's faces may not cross (collected
+  /// again each round: the flips change the faces).
+  void collectWatchedFaces() {
+    watchedFaces_.clear();
+    if (watched_.empty()) return;
+    for (int f = 0; f < output_.faceCount(); ++f) {
+      const Tri& t = output_.triangles[f];
+      if (watched_[t[0]] || watched_[t[1]] || watched_[t[2]]) watchedFaces_.push_back(f);
+    }
+  }
 
   /// Moves v toward the mean of its neighbours in its tangent plane, if that improves its ring;
   /// where a small angle remains, tries steps in eight tangent directions.
@@ -245,12 +263,17 @@ class Relaxer {
     if (ringNormal.dot(normal) > 0.5 * ringNormal.norm()) normal = ringNormal.normalized();
     Vec3 move = centre - p;
     move -= normal * normal.dot(move);
-    const double smallest = tryMove(v, p + move, face, ring(v, p, nullptr), 0.0, maxAway);
+    const double before = ring(v, p, nullptr);
+    double smallest = tryMove(v, p + move, face, before, 0.0, maxAway);
+    // A watched vertex whose move would make faces cross tries half and a quarter of it.
+    for (double part = 0.5; refusedLast_ && part >= 0.25; part *= 0.5)
+      smallest = tryMove(v, p + part * move, face, before, 0.0, maxAway);
     if (smallest >= kGoal) return;
     tryTangentSteps(v, normal, ringLength, smallest);
   }
 
   int moves() const { return moves_; }
+  int refusedCrossing() const { return refusedCrossing_; }
 
  private:
   static constexpr double kGoal = 30.0 * kDegree;  ///< smallest angle a move need not exceed
@@ -272,6 +295,7 @@ class Relaxer {
   /// max(min(before, goal), floor) and the point v leaves stays within maxAway of the new fan.
   /// Returns the ring's smallest angle after (smallestBefore if v stays).
   double tryMove(int v, const Vec3& target, int face, double smallestBefore, double floor, double maxAway) {
+    refusedLast_ = false;
     const SurfacePoint moved = walker_.project(target, face);
     const Vec3 q = walker_.pointOf(moved.face, moved.bary);
     const Vec3 normalThere = walker_.normal(moved.face);
@@ -293,10 +317,25 @@ class Relaxer {
       away = std::min(away, (p - (w[0] * q + w[1] * a + w[2] * b)).squaredNorm());
     }
     if (away > maxAway * maxAway) return smallestBefore;
+    const Vec3 from = p;  // p refers to pos_[v]
     pos_[v] = q;
+    if (!watched_.empty() && watched_[v] && fanCrossesWatchedFaces(v)) {
+      pos_[v] = from;
+      ++refusedCrossing_;
+      refusedLast_ = true;
+      return smallestBefore;
+    }
     points_[v] = moved;
     ++moves_;
     return smallest;
+  }
+
+  /// Whether a face around v crosses one of the watched faces.
+  bool fanCrossesWatchedFaces(int v) const {
+    for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c)
+      for (int g : watchedFaces_)
+        if (TriMesh::face(*c) != g && facesCross(output_, TriMesh::face(*c), g)) return true;
+    return false;
   }
 
   /// Still a small angle at v (at a tip, a saddle, next to a fixed vertex): the mean of the ring
@@ -306,19 +345,20 @@ class Relaxer {
     const Vec3 here = pos_[v];
     const int hereFace = walker_.faceOf(points_[v]);
     const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
-    double best = smallest;
-    Vec3 bestTarget = here;
+    std::vector<std::pair<double, Vec3>> better;  // (smallest angle there, target), best first
     for (const double step : {0.4, 0.2, 0.1})
       for (int k = 0; k < 8; ++k) {
         const Vec3 target = here + step * ringLength * (std::cos(k * kPi / 4) * e1 + std::sin(k * kPi / 4) * e2);
         const SurfacePoint moved = walker_.project(target, hereFace);
         const double s = ring(v, walker_.pointOf(moved.face, moved.bary), nullptr);
-        if (s > best) {
-          best = s;
-          bestTarget = target;
-        }
+        if (s > smallest) better.push_back({s, target});
       }
-    if (best > smallest) tryMove(v, bestTarget, hereFace, smallest, smallest, std::numeric_limits<double>::infinity());
+    std::stable_sort(better.begin(), better.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    // The best; for a watched vertex, the next best while a move is refused for crossing faces.
+    for (const auto& [s, target] : better) {
+      tryMove(v, target, hereFace, smallest, smallest, std::numeric_limits<double>::infinity());
+      if (!refusedLast_) break;
+    }
   }
 
   TriMesh& output_;
@@ -326,23 +366,36 @@ class Relaxer {
   std::vector<SurfacePoint>& points_;
   const SurfaceWalker& walker_;
   double maxDeviation_;
+  const std::vector<char>& watched_;  ///< per output vertex, or empty (RelaxationGuard::watched)
+  std::vector<int> watchedFaces_;     ///< faces with a watched corner (collectWatchedFaces)
   std::vector<Vec3> before_, after_;  ///< normals of v's faces before and after a move
   int moves_ = 0;
+  int refusedCrossing_ = 0;
+  bool refusedLast_ = false;  ///< the last tryMove was refused because faces would cross
 };
 
 }  // namespace
 
 Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
-                                          const RelaxationParams& params) {
+                                          const RelaxationParams& params, const RelaxationGuard& guard) {
   RelaxationResult r;
   if (Status s = checkRelaxationInput(output, points, input); !s) return s;
+  for (const std::vector<char>* flags : {&guard.pinned, &guard.watched})
+    if (!flags->empty() && static_cast<int>(flags->size()) != output.vertexCount())
+      return invalidInput("relaxation: one pinned or watched flag per output vertex is needed");
   if (params.iterations <= 0) return r;
 
   const SurfaceWalker walker(input, params.featureAngleDegrees);
-  const std::vector<char> fixed = fixedVertices(output, points, walker);
+  std::vector<char> fixed = fixedVertices(output, points, walker);
   for (const char f : fixed) r.fixedVertices += f;
-  Relaxer relaxer(output, points, walker, params.maxDeviation);
+  for (size_t v = 0; v < guard.pinned.size(); ++v) {
+    r.pinnedVertices += guard.pinned[v] && !fixed[v];
+    fixed[v] |= guard.pinned[v];
+  }
+  for (size_t v = 0; v < guard.watched.size(); ++v) r.watchedVertices += guard.watched[v] && !fixed[v];
+  Relaxer relaxer(output, points, walker, params.maxDeviation, guard.watched);
   for (int it = 0; it < params.iterations; ++it) {
+    relaxer.collectWatchedFaces();
     for (int v = 0; v < output.vertexCount(); ++v)
       if (!fixed[v]) relaxer.relaxVertex(v);
     // The output is manifold, oriented and has faces (checked above), and moves keep that.
@@ -357,6 +410,7 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
     ++r.iterations;
   }
   r.moves = relaxer.moves();
+  r.refusedCrossing = relaxer.refusedCrossing();
   return r;
 }
 

@@ -68,18 +68,30 @@ struct RelaxationParams {
 };
 
 struct RelaxationResult {
-  int iterations = 0;     ///< rounds done
-  int moves = 0;          ///< vertex moves kept, over all rounds
-  int fixedVertices = 0;  ///< vertices that never move (boundary, input creases and corners)
-  int flips = 0;          ///< edges flipped over all rounds
+  int iterations = 0;       ///< rounds done
+  int moves = 0;            ///< vertex moves kept, over all rounds
+  int fixedVertices = 0;    ///< vertices that never move (boundary, input creases and corners)
+  int pinnedVertices = 0;   ///< of the others, those the caller pinned (RelaxationGuard)
+  int watchedVertices = 0;  ///< and those it watched
+  int refusedCrossing = 0;  ///< moves of watched vertices refused because faces would cross
+  int flips = 0;            ///< edges flipped over all rounds
+};
+
+/// Output vertices the caller constrains (each vector empty, or one flag per output vertex): the
+/// remeshing's answer to a relaxation that made faces cross (remesh_surface.cpp).
+struct RelaxationGuard {
+  std::vector<char> pinned;  ///< does not move
+  /// Moves only where its faces then cross none of the faces around watched vertices
+  /// (facesCross in mesh/self_intersection.h).
+  std::vector<char> watched;
 };
 
 /// Relaxes `output` in place on the surface of `input`. `points[i]` is where output vertex i lies
-/// on the input (as DelaunayResult::origin) and is updated with it. Fails, changing nothing, with
+/// on the input (as DelaunayResult::origin) and is updated with it; `guard` constrains some. Fails, changing nothing, with
 /// NonManifold if either mesh is not manifold, or InvalidInput if the sizes disagree, a point is
 /// out of range, the output has no faces or its faces are not oriented coherently (orient them
 /// first: orientCoherently in mesh/orientation.h).
 Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
-                                          const RelaxationParams& params = {});
+                                          const RelaxationParams& params = {}, const RelaxationGuard& guard = {});
 
 }  // namespace gr

@@ -32,6 +32,35 @@ TEST(SelfIntersection, TwoTrianglesThroughEachOther) {
   EXPECT_TRUE(selfIntersectingFaces(buildTriMesh(q, {{0, 1, 2}, {0, 3, 4}}).value()).empty());
 }
 
+// Folds in a plane, which no edge crosses through: two faces on one edge folded flat onto each
+// other, and a face turned over among coplanar neighbours (an interior vertex of a flat grid moved
+// past its ring, as the ship deck had); a flat grid, and a grid whose one vertex moves
+// inside its ring, have none. The counts agree with CGAL's exact test.
+TEST(SelfIntersection, CoplanarFoldsAreFoundAsCgalFindsThem) {
+  const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0.2, 1, 0}, {0.6, 0.8, 0}};
+  const TriMesh folded = buildTriMesh(p, {{0, 1, 2}, {1, 0, 3}}).value();  // 3 on 2's side of (0, 1)
+  const TriMesh open = buildTriMesh({p[0], p[1], p[2], {0.5, -1, 0}}, {{0, 1, 2}, {1, 0, 3}}).value();
+  EXPECT_EQ(selfIntersectingFaces(folded).size(), 1u);
+  EXPECT_TRUE(selfIntersectingFaces(open).empty());
+  for (const TriMesh* m : {&folded, &open}) {
+    const auto exact = oracle::selfIntersections(*m);
+    ASSERT_TRUE(exact);
+    EXPECT_EQ(selfIntersectingFaces(*m).size(), exact->size());
+  }
+  const TriMesh grid = test::planeGrid(8, 1.0, 0.0);
+  EXPECT_TRUE(selfIntersectingFaces(grid).empty());
+  const int inner = 4 * 9 + 4;             // the middle vertex of the 8 x 8 grid (9 vertices a row)
+  for (const double shift : {0.3, 2.5}) {  // in its ring (no fold), past its ring's far side (folds)
+    std::vector<Vec3> moved = grid.positions;
+    moved[inner] += Vec3(shift / 8.0, 0.37 * shift / 8.0, 0.0);  // in grid spacings, off the grid lines
+    const TriMesh m = buildTriMesh(moved, grid.triangles).value();
+    const auto exact = oracle::selfIntersections(m);
+    ASSERT_TRUE(exact);
+    EXPECT_EQ(selfIntersectingFaces(m).size(), exact->size()) << shift;
+    EXPECT_EQ(exact->empty(), shift < 1.0) << shift;
+  }
+}
+
 TEST(SelfIntersection, TwoSpheresThroughEachOtherAgreeWithCgal) {
   TriMesh a = test::uvSphere(10, 20);
   std::vector<Vec3> p = a.positions;

@@ -154,6 +154,37 @@ TEST(SurfaceRelaxation, ZeroIterationsChangeNothing) {
   EXPECT_EQ(out.triangles, d.mesh.triangles);
 }
 
+// Pinned vertices stay where they are, as the boundary does, while the others move; a pin vector
+// of the wrong size is refused.
+TEST(SurfaceRelaxation, PinnedVerticesDoNotMove) {
+  const TriMesh input = test::planeGrid(40, 1.0, 0.3, 5);
+  const DelaunayResult d = triangulate(input, 150);
+  std::vector<char> pinned(d.mesh.vertexCount(), 0);
+  for (int v = 0; v < d.mesh.vertexCount(); v += 3) pinned[v] = 1;
+  TriMesh out = d.mesh;
+  std::vector<SurfacePoint> points = d.origin;
+  const Expected<RelaxationResult> r =
+      relaxOnSurface(out, points, input, RelaxationParams{}, RelaxationGuard{pinned, {}});
+  ASSERT_TRUE(r) << r.status().message;
+  int moved = 0;
+  for (int v = 0; v < out.vertexCount(); ++v) {
+    if (pinned[v]) {
+      EXPECT_EQ(out.positions[v], d.mesh.positions[v]) << v;
+    } else {
+      moved += out.positions[v] != d.mesh.positions[v];
+    }
+  }
+  EXPECT_GT(moved, 30);
+  pinned.pop_back();
+  out = d.mesh;
+  points = d.origin;
+  const Expected<RelaxationResult> refused =
+      relaxOnSurface(out, points, input, RelaxationParams{}, RelaxationGuard{pinned, {}});
+  ASSERT_FALSE(refused);
+  EXPECT_EQ(refused.status().code, StatusCode::InvalidInput);
+  EXPECT_EQ(out.positions, d.mesh.positions);
+}
+
 TEST(SurfaceRelaxation, BadInputIsReportedAndChangesNothing) {
   const TriMesh input = test::planeGrid(30, 1.0, 0.3, 3);
   const DelaunayResult d = triangulate(input, 80);

@@ -150,17 +150,22 @@ struct SampledDual {
 /// crossing faces and their neighbours watched (their moves refused where faces would cross:
 /// RelaxationGuard), up to kWatchRounds times; then with those corners pinned, up to kPinRounds
 /// times; then not at all. The first output without crossing pairs is kept, else the one with the
-/// fewest (the first of equals). On a thin plate a vertex moved over the plate's rim folds a face
+/// fewest (the first of equals); a guarded relaxation with no more pairs than the triangulation
+/// itself ends the rounds (those are the triangulation's to repair). Past kMaxWatchedPairs pairs
+/// after the first relaxation (an input through itself), the relaxed output is kept if it has no
+/// more pairs than the triangulation, else the triangulation is. On a thin plate a vertex moved over the plate's rim folds a face
 /// onto the other side (the CAD gear of tests/support/cad_meshes.h at 104 centroidal samples: 3
 /// crossing faces); at 30% of a scan a vertex slides over a fold of the surface (bunny00: 2
 /// pairs). Pinning alone kept the triangulation's slivers there (bunny00: 0.5 degrees).
 Status relaxWithoutCrossing(const FrontSurface& front, const TriMesh& surface, const SurfaceRemeshParams& params,
                             SampledDual& d, RemeshStageTimes& times) {
   constexpr int kWatchRounds = 2, kPinRounds = 4;
+  constexpr size_t kMaxWatchedPairs = 64;  // beyond: no watching, the relaxation kept if no worse
   const DelaunayResult unrelaxed = d.dual;
   const int n = unrelaxed.mesh.vertexCount();
   RelaxationGuard guard;
   std::optional<SampledDual> best;
+  std::optional<size_t> before;  // crossing pairs of the triangulation, counted when needed
   SurfaceRemeshParams none = params;
   none.relaxation.iterations = 0;
   for (int round = 0; round <= kPinRounds + 1; ++round) {
@@ -171,6 +176,16 @@ Status relaxWithoutCrossing(const FrontSurface& front, const TriMesh& surface, c
     d.crossingPairs = static_cast<int>(pairs.size());
     if (!best || d.crossingPairs < best->crossingPairs) best = d;
     if (pairs.empty() || !relax) break;
+    if (!before) before = selfIntersectingFaces(unrelaxed.mesh).size();
+    if (round > 0 && pairs.size() <= *before) break;      // what is left the triangulation has itself
+    if (round == 0 && pairs.size() > kMaxWatchedPairs) {  // an input that crosses itself, as boeing.off
+      if (pairs.size() > *before) {
+        d.dual = unrelaxed;  // the relaxation made it worse: not relaxed
+        round = kPinRounds;
+        continue;
+      }
+      break;
+    }
     std::vector<char>& flags = round < kWatchRounds ? guard.watched : guard.pinned;
     flags.resize(n, 0);
     for (const auto& [f, g] : pairs)
@@ -191,32 +206,59 @@ Status relaxWithoutCrossing(const FrontSurface& front, const TriMesh& surface, c
 /// triangulation's crossing repair (DelaunayParams::maxCrossingRounds) comes second: first
 /// without it, since the relaxation undoes most crossings of a dual (the CAD gear at 104 samples:
 /// none left, where refining the crossing cells first added samples and the count search then
-/// landed at 87); only if the relaxed output still crosses are the samples triangulated again
-/// (their field restored by one front) with the repair, and relaxed.
+/// landed at 87); only if the relaxed output still crosses away from where the input crosses
+/// itself are the triangulation's samples (the repair's included) triangulated again, their field
+/// restored by one front, with the repair of crossing triangles, and relaxed.
+/// Whether a crossing pair of d's output lies away from where the input crosses itself: no
+/// corner's cell holds a front vertex on a crossing face of the input (DelaunayParams::mayCross,
+/// else the front mesh's own crossings). Only those are worth the triangulation's repair.
+bool crossesAwayFromInputCrossings(const FrontSurface& front, const SurfaceRemeshParams& params, const SampledDual& d) {
+  const std::vector<char> inputCrossing =
+      params.triangulation.mayCross ? params.triangulation.mayCross() : crossingVertices(front.mesh());
+  std::vector<char> excused(d.dual.mesh.vertexCount(), 0);
+  for (size_t v = 0; v < inputCrossing.size() && v < d.dual.cell.size(); ++v)
+    if (inputCrossing[v] && d.dual.cell[v] >= 0) excused[d.dual.cell[v]] = 1;
+  for (const auto& [f, g] : selfIntersectingFaces(d.dual.mesh)) {
+    bool away = true;
+    for (int face : {f, g})
+      for (int v : d.dual.mesh.triangles[face]) away = away && !excused[v];
+    if (away) return true;
+  }
+  return false;
+}
+
 Status triangulateAndRelax(FastMarcher& marcher, const FrontSurface& front, const TriMesh& surface,
                            const SurfaceRemeshParams& params, SampledDual& d, Progress progress,
                            RemeshStageTimes& times) {
   DelaunayParams triangulation = params.triangulation;
-  for (const bool repairCrossings : {false, true}) {
-    if (repairCrossings && (d.crossingPairs == 0 || params.triangulation.maxCrossingRounds == 0)) break;
-    auto clock = std::chrono::steady_clock::now();
-    if (repairCrossings) {
-      marcher.reset();
-      for (size_t i = 0; i < d.sampling.origin.size(); ++i)
-        if (Status s = marcher.addSource(d.sampling.origin[i], static_cast<int>(i)); !s) return s;
-      if (Status s = marcher.propagate(); !s) return s;
-    }
-    triangulation.maxCrossingRounds = repairCrossings ? params.triangulation.maxCrossingRounds : 0;
-    const double from = repairCrossings ? 0.5 : 0.0;
-    Expected<DelaunayResult> dual =
-        geodesicDelaunay(marcher, d.sampling.origin, triangulation, progress.sub(from, from + 0.4));
-    if (!dual) return dual.status();
-    d.dual = std::move(*dual);
-    times.triangulation += lap(clock);
-    if (!progress.report(from + 0.4, "Relaxation")) return cancelled();
-    if (Status s = relaxWithoutCrossing(front, surface, params, d, times); !s) return s;
-  }
-  return Status::ok();
+  triangulation.maxCrossingRounds = 0;
+  auto clock = std::chrono::steady_clock::now();
+  Expected<DelaunayResult> dual = geodesicDelaunay(marcher, d.sampling.origin, triangulation, progress.sub(0.0, 0.4));
+  if (!dual) return dual.status();
+  std::vector<SurfacePoint> triangulated = dual->origin;  // on the front mesh (relaxDual maps them)
+  d.dual = std::move(*dual);
+  times.triangulation += lap(clock);
+  if (!progress.report(0.4, "Relaxation")) return cancelled();
+  if (Status s = relaxWithoutCrossing(front, surface, params, d, times); !s) return s;
+  if (d.crossingPairs == 0 || params.triangulation.maxCrossingRounds == 0 ||
+      !crossesAwayFromInputCrossings(front, params, d))
+    return Status::ok();
+  // The valid triangulation's samples again (their field by one front), now with the repair of
+  // crossing triangles: no validity repair to redo.
+  marcher.reset();
+  for (size_t i = 0; i < triangulated.size(); ++i)
+    if (Status s = marcher.addSource(triangulated[i], static_cast<int>(i)); !s) return s;
+  if (Status s = marcher.propagate(); !s) return s;
+  const int added = d.dual.addedSamples, dropped = d.dual.droppedSamples, rounds = d.dual.repairRounds;
+  dual = geodesicDelaunay(marcher, std::move(triangulated), params.triangulation, progress.sub(0.5, 0.9));
+  if (!dual) return dual.status();
+  d.dual = std::move(*dual);
+  d.dual.addedSamples += added;
+  d.dual.droppedSamples += dropped;
+  d.dual.repairRounds += rounds;
+  times.triangulation += lap(clock);
+  if (!progress.report(0.9, "Relaxation")) return cancelled();
+  return relaxWithoutCrossing(front, surface, params, d, times);
 }
 
 /// One sampling of `request` samples, the triangulation of its Voronoi diagram on the same engine

@@ -332,9 +332,24 @@ class Relaxer {
 
   /// Whether a face around v crosses one of the watched faces.
   bool fanCrossesWatchedFaces(int v) const {
-    for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c)
-      for (int g : watchedFaces_)
+    const auto box = [&](int f, Vec3& lo, Vec3& hi) {
+      const Tri& t = output_.triangles[f];
+      lo = pos_[t[0]].cwiseMin(pos_[t[1]]).cwiseMin(pos_[t[2]]);
+      hi = pos_[t[0]].cwiseMax(pos_[t[1]]).cwiseMax(pos_[t[2]]);
+    };
+    Vec3 fanLo, fanHi, lo, hi;
+    box(TriMesh::face(*output_.cornersBegin(v)), fanLo, fanHi);
+    for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c) {
+      box(TriMesh::face(*c), lo, hi);
+      fanLo = fanLo.cwiseMin(lo);
+      fanHi = fanHi.cwiseMax(hi);
+    }
+    for (int g : watchedFaces_) {
+      box(g, lo, hi);
+      if (!((lo.array() <= fanHi.array()).all() && (fanLo.array() <= hi.array()).all())) continue;
+      for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c)
         if (TriMesh::face(*c) != g && facesCross(output_, TriMesh::face(*c), g)) return true;
+    }
     return false;
   }
 

@@ -5,10 +5,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
 #include "core/geodesic/farthest_point_sampling.h"
 #include "core/measure/evaluation.h"
 #include "core/remesh/geodesic_delaunay.h"
+#include "tests/oracles/remesh_oracles.h"
 #include "tests/support/test_support.h"
 
 namespace gr {
@@ -108,6 +111,41 @@ INSTANTIATE_TEST_SUITE_P(Meshes, DelaunayWithBoundaries,
                          });
 
 // A synthetic mesh of two components of different sizes: two icospheres, radius 1 and 0.5.
+// The repair of crossing triangles (DelaunayParams::maxCrossingRounds): the dual of 30% of
+// fandisk's and armadillo's vertices has straight triangles through each other (16 and 6 pairs by
+// the core's check) where the input has none; with the repair, samples are added in their cells
+// until none crosses (CGAL's exact test), the topology kept. Without it (0 rounds) they stay.
+TEST(Delaunay, CrossingTrianglesGetSamplesUntilNoneCross) {
+  for (const char* name : {"fandisk.off", "armadillo.off"}) {
+    SCOPED_TRACE(name);
+    const TriMesh mesh = test::loadRealMesh(name);
+    FastMarcher marcher(mesh, Metric::uniform());
+    FpsParams fps;
+    fps.targetCount = static_cast<int>(0.3 * mesh.vertexCount());
+    const Expected<FpsResult> samples = farthestPointSampling(marcher, fps);
+    ASSERT_TRUE(samples);
+    std::vector<int> vertices;
+    for (const SurfacePoint& p : samples->origin) vertices.push_back(p.vertex);
+    DelaunayParams without;
+    without.maxCrossingRounds = 0;
+    const Expected<DelaunayResult> plain = geodesicDelaunay(mesh, Metric::uniform(), vertices, without);
+    const Expected<DelaunayResult> repaired = geodesicDelaunay(mesh, Metric::uniform(), vertices);
+    ASSERT_TRUE(plain && repaired);
+    const auto plainCrossing = oracle::selfIntersections(plain->mesh);
+    const auto repairedCrossing = oracle::selfIntersections(repaired->mesh);
+    ASSERT_TRUE(plainCrossing && repairedCrossing);
+    std::printf("%s at 30%%: %zu crossing pairs without the repair; %zu with it, %d samples added in %d rounds\n", name,
+                plainCrossing->size(), repairedCrossing->size(), repaired->addedSamples - plain->addedSamples,
+                repaired->crossingRounds);
+    EXPECT_GT(plainCrossing->size(), 0u);
+    EXPECT_EQ(repairedCrossing->size(), 0u);
+    EXPECT_GT(repaired->crossingRounds, 0);
+    EXPECT_EQ(plain->crossingRounds, 0);
+    test::expectValidWithTopologyOf(test::recount(repaired->mesh.triangles, repaired->mesh.vertexCount()),
+                                    test::recount(mesh.triangles, mesh.vertexCount()));
+  }
+}
+
 TEST(Delaunay, TwoComponentsAtTenAndThirtyPercent) {
   const TriMesh a = test::icosphere(4, 1.0), b = test::icosphere(3, 0.5);
   std::vector<Vec3> pos = a.positions;

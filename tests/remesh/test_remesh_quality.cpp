@@ -177,9 +177,10 @@ TEST(RemeshCount, HandlesAreCapturedWhereTheyAreNotByRefiningEverywhere) {
 // Issue 20, point 2: the output does not cross itself where the input does not. Cases of the data
 // set whose output crossed itself before the repair (CGAL pairs, input none): rotor.off, a thin
 // part, at 5% and 10% (24 and 12 pairs: dual triangles through the part), bunny00, fandisk and
-// armadillo at 30% (4, 3 and 13 pairs: slivers folding over a neighbour, vertices relaxed over a
-// crease). The triangulation's repair adds samples in the cells of crossing triangles and the
-// relaxation pins the corners of the faces it made cross; the judge is CGAL's exact test.
+// armadillo at 30% (4, 11 and 13 pairs: slivers folding over a neighbour, vertices relaxed over a
+// fold). The relaxation refuses the moves that make faces cross (RelaxationGuard), and where the
+// triangulation still crosses, its repair adds samples in the cells of crossing triangles; the
+// judge is CGAL's exact test.
 TEST(RemeshCrossing, OutputsDoNotCrossThemselvesWhereTheInputDoesNot) {
   const std::vector<std::pair<const char*, double>> cases = {
       {"rotor.off", 0.05}, {"rotor.off", 0.1}, {"bunny00.off", 0.3}, {"fandisk.off", 0.3}, {"armadillo.off", 0.3}};

@@ -145,8 +145,30 @@ struct SampledDual {
   int crossingPairs = 0;         ///< pairs of crossing faces of the output (relaxWithoutCrossing counts them)
 };
 
+/// The crossing pairs of `dual`'s output away from where the input crosses itself: no corner's
+/// cell holds a front vertex on a crossing face of the input (DelaunayParams::mayCross, which
+/// remeshSurface always sets). Only those are worth watching in the relaxation or the
+/// triangulation's repair: the output may cross where the input does.
+std::vector<std::pair<int, int>> awayFromInputCrossings(const SurfaceRemeshParams& params, const DelaunayResult& dual,
+                                                        std::vector<std::pair<int, int>> pairs) {
+  if (pairs.empty() || !params.triangulation.mayCross) return pairs;
+  const std::vector<char> inputCrossing = params.triangulation.mayCross();
+  std::vector<char> excused(dual.mesh.vertexCount(), 0);
+  for (size_t v = 0; v < inputCrossing.size() && v < dual.cell.size(); ++v)
+    if (inputCrossing[v] && dual.cell[v] >= 0) excused[dual.cell[v]] = 1;
+  const auto nearInput = [&](const std::pair<int, int>& p) {
+    for (int face : {p.first, p.second})
+      for (int v : dual.mesh.triangles[face])
+        if (excused[v]) return true;
+    return false;
+  };
+  pairs.erase(std::remove_if(pairs.begin(), pairs.end(), nearInput), pairs.end());
+  return pairs;
+}
+
 /// The relaxation of d's dual, kept from making its faces cross: a relaxed output with crossing
-/// pairs (selfIntersectingFaces) is relaxed again from the triangulation, the corners of its
+/// pairs (selfIntersectingFaces, away from the input's own crossings: awayFromInputCrossings) is
+/// relaxed again from the triangulation, the corners of its
 /// crossing faces and their neighbours watched (their moves refused where faces would cross:
 /// RelaxationGuard), up to kWatchRounds times; then with those corners pinned, up to kPinRounds
 /// times; then not at all. The first output without crossing pairs is kept, else the one with the
@@ -166,17 +188,22 @@ Status relaxWithoutCrossing(const FrontSurface& front, const TriMesh& surface, c
   RelaxationGuard guard;
   std::optional<SampledDual> best;
   std::optional<size_t> before;  // crossing pairs of the triangulation, counted when needed
+  size_t bestPairs = 0;          // best's pairs away from the input's own crossings
   SurfaceRemeshParams none = params;
   none.relaxation.iterations = 0;
   for (int round = 0; round <= kPinRounds + 1; ++round) {
     const bool relax = round <= kPinRounds && params.relaxation.iterations > 0;
     if (Status s = relaxDual(front, surface, relax ? params : none, d.dual, d.relaxation, times, guard); !s) return s;
-    const std::vector<std::pair<int, int>> pairs = selfIntersectingFaces(d.dual.mesh);
-    d.crossing = !pairs.empty();
-    d.crossingPairs = static_cast<int>(pairs.size());
-    if (!best || d.crossingPairs < best->crossingPairs) best = d;
+    const std::vector<std::pair<int, int>> all = selfIntersectingFaces(d.dual.mesh);
+    const std::vector<std::pair<int, int>> pairs = awayFromInputCrossings(params, d.dual, all);
+    d.crossing = !all.empty();
+    d.crossingPairs = static_cast<int>(all.size());
+    if (!best || pairs.size() < bestPairs) {
+      best = d;
+      bestPairs = pairs.size();
+    }
     if (pairs.empty() || !relax) break;
-    if (!before) before = selfIntersectingFaces(unrelaxed.mesh).size();
+    if (!before) before = awayFromInputCrossings(params, unrelaxed, selfIntersectingFaces(unrelaxed.mesh)).size();
     if (round > 0 && pairs.size() <= *before) break;      // what is left the triangulation has itself
     if (round == 0 && pairs.size() > kMaxWatchedPairs) {  // an input that crosses itself, as boeing.off
       if (pairs.size() > *before) {
@@ -209,24 +236,6 @@ Status relaxWithoutCrossing(const FrontSurface& front, const TriMesh& surface, c
 /// landed at 87); only if the relaxed output still crosses away from where the input crosses
 /// itself are the triangulation's samples (the repair's included) triangulated again, their field
 /// restored by one front, with the repair of crossing triangles, and relaxed.
-/// Whether a crossing pair of d's output lies away from where the input crosses itself: no
-/// corner's cell holds a front vertex on a crossing face of the input (DelaunayParams::mayCross,
-/// else the front mesh's own crossings). Only those are worth the triangulation's repair.
-bool crossesAwayFromInputCrossings(const FrontSurface& front, const SurfaceRemeshParams& params, const SampledDual& d) {
-  const std::vector<char> inputCrossing =
-      params.triangulation.mayCross ? params.triangulation.mayCross() : crossingVertices(front.mesh());
-  std::vector<char> excused(d.dual.mesh.vertexCount(), 0);
-  for (size_t v = 0; v < inputCrossing.size() && v < d.dual.cell.size(); ++v)
-    if (inputCrossing[v] && d.dual.cell[v] >= 0) excused[d.dual.cell[v]] = 1;
-  for (const auto& [f, g] : selfIntersectingFaces(d.dual.mesh)) {
-    bool away = true;
-    for (int face : {f, g})
-      for (int v : d.dual.mesh.triangles[face]) away = away && !excused[v];
-    if (away) return true;
-  }
-  return false;
-}
-
 Status triangulateAndRelax(FastMarcher& marcher, const FrontSurface& front, const TriMesh& surface,
                            const SurfaceRemeshParams& params, SampledDual& d, Progress progress,
                            RemeshStageTimes& times) {
@@ -241,7 +250,7 @@ Status triangulateAndRelax(FastMarcher& marcher, const FrontSurface& front, cons
   if (!progress.report(0.4, "Relaxation")) return cancelled();
   if (Status s = relaxWithoutCrossing(front, surface, params, d, times); !s) return s;
   if (d.crossingPairs == 0 || params.triangulation.maxCrossingRounds == 0 ||
-      !crossesAwayFromInputCrossings(front, params, d))
+      awayFromInputCrossings(params, d.dual, selfIntersectingFaces(d.dual.mesh)).empty())
     return Status::ok();
   // The valid triangulation's samples again (their field by one front), now with the repair of
   // crossing triangles: no validity repair to redo.
@@ -418,13 +427,18 @@ std::vector<SurfacePoint> originsOnInput(const std::vector<SurfacePoint>& onFron
   return origin;
 }
 
-/// DelaunayParams::mayCross on the intrinsic refinement: its vertices on a crossing face of the
-/// input (the refinement's own straight triangles may cross where the input's do not). Computed
-/// once, on the first call, and kept for the samplings after it.
-std::function<std::vector<char>()> inputCrossingsOnRefinement(const TriMesh& surface, const FrontSurface& front) {
+/// DelaunayParams::mayCross for the front mesh: on the subdivided input, its own crossing
+/// vertices; on the intrinsic refinement, its vertices on a crossing face of the input (the
+/// refinement's own straight triangles may cross where the input's do not). Computed once, on the
+/// first call, and kept for the samplings after it.
+std::function<std::vector<char>()> inputCrossings(const TriMesh& surface, const FrontSurface& front) {
   auto cached = std::make_shared<std::vector<char>>();
   return [&surface, &front, cached]() {
     if (!cached->empty()) return *cached;
+    if (!front.geodesic.refined) {  // the subdivision has the input's geometry
+      *cached = crossingVertices(front.mesh());
+      return *cached;
+    }
     std::vector<char> crossingFace(surface.faceCount(), 0), crossingVertex(surface.vertexCount(), 0);
     for (const auto& [f, g] : selfIntersectingFaces(surface))
       for (int face : {f, g}) {
@@ -472,7 +486,7 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
 
   const Progress remeshing = progress.sub(front->geodesic.refined ? 0.1 * remeshShare : 0.0, remeshShare);
   SurfaceRemeshParams searchParams = params;
-  if (front->geodesic.refined) searchParams.triangulation.mayCross = inputCrossingsOnRefinement(surface, *front);
+  searchParams.triangulation.mayCross = inputCrossings(surface, *front);
   Expected<SampledDual> sampled = sampleToCount(marcher, *front, surface, searchParams, remeshing, r);
   if (!sampled) return sampled.status();
   const FpsResult& sampling = sampled->sampling;

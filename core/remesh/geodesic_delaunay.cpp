@@ -230,26 +230,17 @@ std::vector<int> cellsToRefineForTopology(const FastMarcher& marcher, const TriM
 /// The cells to refine where the straight triangles of a valid dual cross each other (an output
 /// that is not embedded: on thin plates a triangle of the top cells cuts through the bottom; at
 /// 30% of a scan a sliver dual triangle folds over its neighbour): the cells of both faces of each
-/// crossing pair. A pair with a cell that holds a vertex where the input itself crosses
-/// (DelaunayParams::mayCross, read on first use into `inputCrossing`) is left alone: the output
-/// may cross where the input does.
+/// crossing pair away from the input's own crossings (crossingsAwayFromInput, with
+/// DelaunayParams::mayCross read on first use into `inputCrossing`).
 std::vector<int> crossingCells(const TriMesh& out, const TriMesh& mesh, const std::vector<int>& cell,
                                const DelaunayParams& params, std::vector<char>& inputCrossing) {
-  const std::vector<std::pair<int, int>> pairs = selfIntersectingFaces(out);
+  std::vector<std::pair<int, int>> pairs = selfIntersectingFaces(out);
   if (pairs.empty()) return {};
   if (inputCrossing.empty()) inputCrossing = params.mayCross ? params.mayCross() : crossingVertices(mesh);
-  if (static_cast<int>(inputCrossing.size()) != mesh.vertexCount()) inputCrossing.assign(mesh.vertexCount(), 1);
-  std::vector<char> excused(out.vertexCount(), 0);
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-    if (inputCrossing[v] && cell[v] >= 0) excused[cell[v]] = 1;
   std::vector<int> bad;
-  for (const auto& [f, g] : pairs) {
-    const Tri &a = out.triangles[f], &b = out.triangles[g];
-    const bool nearInputCrossing =
-        excused[a[0]] || excused[a[1]] || excused[a[2]] || excused[b[0]] || excused[b[1]] || excused[b[2]];
-    if (nearInputCrossing) continue;
-    bad.insert(bad.end(), a.begin(), a.end());
-    bad.insert(bad.end(), b.begin(), b.end());
+  for (const auto& [f, g] : crossingsAwayFromInput(out, cell, inputCrossing, std::move(pairs))) {
+    bad.insert(bad.end(), out.triangles[f].begin(), out.triangles[f].end());
+    bad.insert(bad.end(), out.triangles[g].begin(), out.triangles[g].end());
   }
   return bad;
 }
@@ -377,6 +368,24 @@ Expected<int> addRefinementSamples(FastMarcher& marcher, std::vector<SurfacePoin
 }
 
 }  // namespace
+
+std::vector<std::pair<int, int>> crossingsAwayFromInput(const TriMesh& out, const std::vector<int>& cell,
+                                                        const std::vector<char>& inputCrossing,
+                                                        std::vector<std::pair<int, int>> pairs) {
+  if (pairs.empty()) return pairs;
+  if (inputCrossing.size() != cell.size()) return {};  // not known: every crossing may be the input's
+  std::vector<char> excused(out.vertexCount(), 0);
+  for (size_t v = 0; v < cell.size(); ++v)
+    if (inputCrossing[v] && cell[v] >= 0) excused[cell[v]] = 1;
+  const auto nearInput = [&](const std::pair<int, int>& p) {
+    for (int face : {p.first, p.second})
+      for (int v : out.triangles[face])
+        if (excused[v]) return true;
+    return false;
+  };
+  pairs.erase(std::remove_if(pairs.begin(), pairs.end(), nearInput), pairs.end());
+  return pairs;
+}
 
 Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& metric, std::vector<int> vertices,
                                           const DelaunayParams& params, Progress progress) {

@@ -30,6 +30,7 @@
 #pragma once
 
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "core/base/progress.h"
@@ -84,5 +85,13 @@ Expected<DelaunayResult> geodesicDelaunay(const TriMesh& mesh, const Metric& met
 /// scratch. Samples may lie inside faces; the ones the repair adds are vertices.
 Expected<DelaunayResult> geodesicDelaunay(FastMarcher& marcher, std::vector<SurfacePoint> samples,
                                           const DelaunayParams& params = {}, Progress progress = {});
+
+/// Of `pairs`, crossing faces of a dual `out` (selfIntersectingFaces), those away from where the
+/// input crosses itself: no corner's cell holds a vertex flagged in `inputCrossing` (one flag per
+/// vertex of the mesh the fronts ran on, as DelaunayParams::mayCross gives; `cell` maps those
+/// vertices to output vertices, as DelaunayResult::cell). Flags of another size: none is away.
+std::vector<std::pair<int, int>> crossingsAwayFromInput(const TriMesh& out, const std::vector<int>& cell,
+                                                        const std::vector<char>& inputCrossing,
+                                                        std::vector<std::pair<int, int>> pairs);
 
 }  // namespace gr

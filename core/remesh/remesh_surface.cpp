@@ -141,29 +141,17 @@ struct SampledDual {
   DelaunayResult dual;
   RelaxationResult relaxation;
   int requested = 0;
-  std::optional<bool> crossing;  ///< known when the relaxation had to check it
-  int crossingPairs = 0;         ///< pairs of crossing faces of the output (relaxWithoutCrossing counts them)
+  int crossingPairs = 0;      ///< pairs of crossing faces of the output (relaxWithoutCrossing counts them)
+  int crossingPairsAway = 0;  ///< of them, those away from the input's own crossings
 };
 
-/// The crossing pairs of `dual`'s output away from where the input crosses itself: no corner's
-/// cell holds a front vertex on a crossing face of the input (DelaunayParams::mayCross, which
-/// remeshSurface always sets). Only those are worth watching in the relaxation or the
-/// triangulation's repair: the output may cross where the input does.
+/// The crossing pairs of `dual`'s output away from where the input crosses itself
+/// (crossingsAwayFromInput with DelaunayParams::mayCross, which remeshSurface always sets): only
+/// those are worth watching in the relaxation or the triangulation's repair.
 std::vector<std::pair<int, int>> awayFromInputCrossings(const SurfaceRemeshParams& params, const DelaunayResult& dual,
                                                         std::vector<std::pair<int, int>> pairs) {
   if (pairs.empty() || !params.triangulation.mayCross) return pairs;
-  const std::vector<char> inputCrossing = params.triangulation.mayCross();
-  std::vector<char> excused(dual.mesh.vertexCount(), 0);
-  for (size_t v = 0; v < inputCrossing.size() && v < dual.cell.size(); ++v)
-    if (inputCrossing[v] && dual.cell[v] >= 0) excused[dual.cell[v]] = 1;
-  const auto nearInput = [&](const std::pair<int, int>& p) {
-    for (int face : {p.first, p.second})
-      for (int v : dual.mesh.triangles[face])
-        if (excused[v]) return true;
-    return false;
-  };
-  pairs.erase(std::remove_if(pairs.begin(), pairs.end(), nearInput), pairs.end());
-  return pairs;
+  return crossingsAwayFromInput(dual.mesh, dual.cell, params.triangulation.mayCross(), std::move(pairs));
 }
 
 /// The relaxation of d's dual, kept from making its faces cross: a relaxed output with crossing
@@ -188,7 +176,6 @@ Status relaxWithoutCrossing(const FrontSurface& front, const TriMesh& surface, c
   RelaxationGuard guard;
   std::optional<SampledDual> best;
   std::optional<size_t> before;  // crossing pairs of the triangulation, counted when needed
-  size_t bestPairs = 0;          // best's pairs away from the input's own crossings
   SurfaceRemeshParams none = params;
   none.relaxation.iterations = 0;
   for (int round = 0; round <= kPinRounds + 1; ++round) {
@@ -196,12 +183,9 @@ Status relaxWithoutCrossing(const FrontSurface& front, const TriMesh& surface, c
     if (Status s = relaxDual(front, surface, relax ? params : none, d.dual, d.relaxation, times, guard); !s) return s;
     const std::vector<std::pair<int, int>> all = selfIntersectingFaces(d.dual.mesh);
     const std::vector<std::pair<int, int>> pairs = awayFromInputCrossings(params, d.dual, all);
-    d.crossing = !all.empty();
     d.crossingPairs = static_cast<int>(all.size());
-    if (!best || pairs.size() < bestPairs) {
-      best = d;
-      bestPairs = pairs.size();
-    }
+    d.crossingPairsAway = static_cast<int>(pairs.size());
+    if (!best || d.crossingPairsAway < best->crossingPairsAway) best = d;
     if (pairs.empty() || !relax) break;
     if (!before) before = awayFromInputCrossings(params, unrelaxed, selfIntersectingFaces(unrelaxed.mesh)).size();
     if (round > 0 && pairs.size() <= *before) break;      // what is left the triangulation has itself
@@ -249,9 +233,7 @@ Status triangulateAndRelax(FastMarcher& marcher, const FrontSurface& front, cons
   times.triangulation += lap(clock);
   if (!progress.report(0.4, "Relaxation")) return cancelled();
   if (Status s = relaxWithoutCrossing(front, surface, params, d, times); !s) return s;
-  if (d.crossingPairs == 0 || params.triangulation.maxCrossingRounds == 0 ||
-      awayFromInputCrossings(params, d.dual, selfIntersectingFaces(d.dual.mesh)).empty())
-    return Status::ok();
+  if (d.crossingPairsAway == 0 || params.triangulation.maxCrossingRounds == 0) return Status::ok();
   // The valid triangulation's samples again (their field by one front), now with the repair of
   // crossing triangles: no validity repair to redo.
   marcher.reset();
@@ -323,8 +305,7 @@ int nextRequest(int request, int got, int target, int below, int above) {
 /// distance to the count. Smaller is better.
 std::pair<bool, int> miss(const SampledDual& d, int target) {
   const int got = d.dual.mesh.vertexCount();
-  const bool crossing = d.crossing ? *d.crossing : !selfIntersectingFaces(d.dual.mesh, 1).empty();
-  return {crossing, std::abs(got - target)};
+  return {d.crossingPairs > 0, std::abs(got - target)};
 }
 
 /// Whether a first sampling that missed the count is worth a centroidal one at the same count:
@@ -369,7 +350,7 @@ Expected<SampledDual> sampleToCount(FastMarcher& marcher, const FrontSurface& fr
     if (!run) break;
     ++r.samplingRounds;
     int got = run->dual.mesh.vertexCount();
-    if (target <= 0 || (round == 0 && got == target && !run->crossing.value_or(false))) {
+    if (target <= 0 || (round == 0 && got == target && run->crossingPairs == 0)) {
       r.fewestCount = got;
       return std::move(*run);
     }

@@ -20,13 +20,16 @@ const QStringList kFieldNames = {"Vertex quality", "Total curvature", "Color gra
 const QStringList kMappingNames = {"Direct", "Attractive", "Repulsive"};                  // SpeedMapping order
 constexpr double kRampPercentile = 95.0;  ///< the total curvature's colour ramp ends at this percentile
 
-void declareCurvatureRadius(const MeshModel& mesh, RichParameterList& params) {
+/// `zeroMeans`: what a radius of 0 stands for in this filter.
+void declareCurvatureRadius(const MeshModel& mesh, RichParameterList& params, const QString& zeroMeans) {
   const float diag = mesh.cm.bbox.IsNull() ? 1.0f : mesh.cm.bbox.Diag();
   const CurvatureParams defaults;
   params.addParam(RichAbsPerc(param::kCurvatureRadius, float(defaults.radius), 0.0f, 0.1f * diag, "Curvature radius",
                               "Radius of the neighbourhood the curvature tensor is averaged over (mesh units or % of "
-                              "the bounding-box diagonal). 0 = the mean edge length; each vertex uses at least its "
-                              "1-ring. Larger radii smooth noise and widen sharp edges (default " +
+                              "the bounding-box diagonal). 0 = " +
+                                  zeroMeans +
+                                  "; each vertex uses at least its 1-ring. Larger radii smooth noise and widen sharp "
+                                  "edges (default " +
                                   QString::number(defaults.radius) + ")."));
 }
 
@@ -49,11 +52,17 @@ Expected<std::vector<double>> fieldValues(const CurrentMesh& current, AdaptiveFi
 }
 
 /// The log line of the field and its speed.
-std::string fieldLine(const AdaptiveMetricParams& params, const AdaptiveMetricResult& metric) {
+std::string fieldLine(const AdaptiveRemeshParams& adaptive, const AdaptiveRemeshResult& result) {
+  const AdaptiveMetricParams& params = adaptive.metric;
+  const AdaptiveMetricResult& metric = result.metric;
   const SpeedFieldResult& speed = metric.speed;
   std::string field = toString(params.field);
   if (params.field == AdaptiveField::TotalCurvature)
-    field += " (radius " + formatNumber(metric.curvatureRadius, "%.4g") + ")";
+    field +=
+        " (radius " + formatNumber(metric.curvatureRadius, "%.4g") +
+        (result.automaticRadius ? ", automatic: " + formatNumber(adaptive.radiusInSpacings, "%g") + " target spacings"
+                                : std::string()) +
+        ")";
   return "Field: " + field + " from " + formatNumber(speed.fieldMin, "%.4g") + " to " +
          formatNumber(speed.fieldMax, "%.4g") + ", scale (" + formatNumber(params.speed.percentile, "%g") +
          "th percentile) " + formatNumber(speed.scale, "%.4g") + "; mapping " + toString(params.speed.mapping) +
@@ -84,7 +93,11 @@ void declareAdaptiveRemesh(const MeshModel& mesh, RichParameterList& params) {
                             "for Repulsive (>= 0; 0 = uniform). Dimensionless: the same value gives similar results "
                             "on meshes of any size (default " +
                                 QString::number(defaults.speed.strength) + ")."));
-  declareCurvatureRadius(mesh, params);
+  declareCurvatureRadius(mesh, params,
+                         "automatic: " + QString::number(AdaptiveRemeshParams{}.radiusInSpacings) +
+                             " times the target spacing (the side of equilateral triangles of the surface's area "
+                             "at Target vertices), so sharp edges attract a band about one output edge wide at any "
+                             "count");
 }
 
 Status applyAdaptiveRemesh(MeshDocument& doc, const RichParameterList& params, FilterContext& ctx) {
@@ -106,12 +119,14 @@ Status applyAdaptiveRemesh(MeshDocument& doc, const RichParameterList& params, F
   commit.layerSuffix = " - geodesic adaptive remesh";
   commit.weighted = !result->metric.speed.metric.isUniform();
   commitRemesh(doc, *current, result->remesh, commit, ctx);
-  ctx.log(fieldLine(adaptive.metric, result->metric));
+  ctx.log(fieldLine(adaptive, *result));
   if (result->metric.speed.usedFallback()) ctx.warn("Speed field: " + result->metric.speed.fallback);
   return Status::ok();
 }
 
-void declareTotalCurvature(const MeshModel& mesh, RichParameterList& params) { declareCurvatureRadius(mesh, params); }
+void declareTotalCurvature(const MeshModel& mesh, RichParameterList& params) {
+  declareCurvatureRadius(mesh, params, "the mean edge length");
+}
 
 Status applyTotalCurvature(MeshDocument& doc, const RichParameterList& params, FilterContext& ctx) {
   const auto start = std::chrono::steady_clock::now();

@@ -14,6 +14,7 @@
 #include "core/geodesic/fast_marching.h"
 #include "core/geodesic/geodesic_lloyd.h"
 #include "core/geodesic/geodesic_surface.h"
+#include "core/mesh/face_geometry.h"
 #include "core/mesh/orientation.h"
 #include "core/mesh/self_intersection.h"
 #include "core/mesh/subdivide.h"
@@ -498,10 +499,22 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   return r;
 }
 
+double targetSpacing(const TriMesh& mesh, const FpsParams& sampling) {
+  if (sampling.targetCount <= 0) return std::sqrt(3.0) * sampling.minSpacing;
+  double area = 0.0;
+  for (const Tri& t : mesh.triangles) area += 0.5 * areaNormal(mesh, t).norm();
+  return std::sqrt(2.0 * area / (std::sqrt(3.0) * sampling.targetCount));
+}
+
 Expected<AdaptiveRemeshResult> remeshAdaptive(const TriMesh& input, const std::vector<double>& values,
                                               const AdaptiveRemeshParams& params, Progress progress) {
   AdaptiveRemeshResult r;
-  Expected<AdaptiveMetricResult> metric = adaptiveMetric(input, values, params.metric, progress.sub(0.0, 0.1));
+  AdaptiveMetricParams metricParams = params.metric;
+  r.automaticRadius = metricParams.field == AdaptiveField::TotalCurvature && metricParams.curvature.radius == 0.0 &&
+                      params.radiusInSpacings > 0.0;
+  if (r.automaticRadius)
+    metricParams.curvature.radius = params.radiusInSpacings * targetSpacing(input, params.remesh.sampling);
+  Expected<AdaptiveMetricResult> metric = adaptiveMetric(input, values, metricParams, progress.sub(0.0, 0.1));
   if (!metric) return metric.status();
   r.metric = std::move(*metric);
   Expected<SurfaceRemeshResult> remeshed =

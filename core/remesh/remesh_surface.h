@@ -176,14 +176,27 @@ inline Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const S
   return remeshSurface(input, Metric::uniform(), params, std::move(progress));
 }
 
+/// The spacing of `sampling`'s output on `mesh`: the side h of the equilateral triangles that N
+/// vertices would make of the surface's area A (N vertices make about 2N triangles of area
+/// sqrt(3)/4 h^2, so h = sqrt(2 A / (sqrt(3) N))) for a target count N; for a spacing
+/// (a covering radius r), the side sqrt(3) r of the triangles that have r as circumradius.
+double targetSpacing(const TriMesh& mesh, const FpsParams& sampling);
+
 /// Adaptive remeshing: the metric from a field (adaptive_metric.h), then remeshSurface with it.
 struct AdaptiveRemeshParams {
   AdaptiveMetricParams metric;
   SurfaceRemeshParams remesh = SurfaceRemeshParams::adaptive();
+  /// With the total curvature and metric.curvature.radius 0 (automatic), the ball radius is this
+  /// many target spacings (targetSpacing): the curvature is read at the scale of the output's
+  /// edges, so a sharp edge attracts a band about one output edge wide at any count and on any
+  /// mesh, where a radius in input edges (or an absolute one) suits one mesh at one count
+  /// (issue 20; the sweep behind the value: docs/BENCHMARKS.md, adaptive defaults).
+  double radiusInSpacings = 0.5;
 };
 struct AdaptiveRemeshResult {
   AdaptiveMetricResult metric;
   SurfaceRemeshResult remesh;
+  bool automaticRadius = false;  ///< the curvature radius came from radiusInSpacings
 };
 /// `values` as for adaptiveMetric. Fails as adaptiveMetric, then as remeshSurface.
 Expected<AdaptiveRemeshResult> remeshAdaptive(const TriMesh& input, const std::vector<double>& values,

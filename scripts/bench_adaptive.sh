@@ -45,7 +45,8 @@ def t(x):
     return "" if x is None else (f"{x / 1000:.3g} s" if x >= 1000 else f"{x:.3g} ms")
 
 labels = {"Uniform": "uniform (ours)", "Adaptive": "**adaptive (ours)**",
-          "AdaptiveDefaultRadius": "adaptive, radius 1 edge (filter default)", "Cgal": "CGAL isotropic",
+          "AdaptiveDefaults": "adaptive, filter defaults", "UniformFilter": "uniform, filter defaults",
+          "Cgal": "CGAL isotropic",
           "MeshLabQECD": "MeshLab QECD"}
 # Legend and header: the counters bench/bench_adaptive.cpp sets. metric_ms is gr::remeshAdaptive's wall
 # time minus the remesh's stages, i.e. building the adaptive metric (total curvature, speed, P = 1/F).
@@ -57,7 +58,8 @@ print(f"Run: {ctx.get('date', '?')} on {ctx.get('host_name', '?')}, {ctx.get('nu
       "over a ball, Attractive speed, P = 1/F: the call's wall time minus the remesh's stages), sampling, "
       "triangulation (geodesic Delaunay with its repair and flips); the preparation (orientation, metric transfer) and the "
       "engine's construction are in the time only. Adaptive (ours): curvature radius 2 mean edge lengths, target "
-      "calibrated untimed to at most the uniform result's vertex count; radius 1 edge (filter default): at the "
+      "calibrated untimed to at most the uniform result's vertex count; filter defaults: the adaptive filter's "
+      "(curvature radius half the target spacing, strength 4) and the uniform filter's (relaxation included), at the "
       "uniform target, not calibrated. Errors: two-sided Hausdorff and RMS "
       "distance to the input in % of its bounding-box diagonal. vs uniform: this method's error / the uniform "
       "result's (below 1: lower).")
@@ -66,7 +68,7 @@ print("| mesh | target | method | vertices | time | metric | sampling | triangul
       "| RMS % | H vs uniform | RMS vs uniform | min angle | % < 30° |")
 print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
 # Interleaved repetitions come in random order: print by mesh, count, then method.
-family_order = ["Uniform", "Adaptive", "AdaptiveDefaultRadius", "Cgal", "MeshLabQECD"]
+family_order = ["Uniform", "Adaptive", "AdaptiveDefaults", "UniformFilter", "Cgal", "MeshLabQECD"]
 mesh_order = ["fandisk", "bunny00"]
 def row_key(key):
     family, mesh, target = key
@@ -74,13 +76,15 @@ def row_key(key):
             int("".join(ch for ch in target if ch.isdigit()) or 0),
             family_order.index(family) if family in family_order else len(family_order))
 for (family, mesh, target), rows in sorted(runs.items(), key=lambda kv: row_key(kv[0])):
+    if mesh not in mesh_order:
+        continue  # the CAD cases: the table after this one
     r = rows[0]
     err = next((x.get("error_message", "error") for x in rows if x.get("error_occurred")), None)
     if err:
         print(f"| {mesh} | {target} | {labels.get(family, family)} | error: {err} | | | | | | | | | | |")
         continue
     u = runs.get(("Uniform", mesh, target), [{}])[0]
-    ours = family in ("Uniform", "Adaptive", "AdaptiveDefaultRadius")
+    ours = family in ("Uniform", "Adaptive", "AdaptiveDefaults", "UniformFilter")
     metric = t(med(rows, "metric_ms")) if family.startswith("Adaptive") else ""
     hu = f"{r['hausdorff2_pct'] / u['hausdorff2_pct']:.2f}" if "hausdorff2_pct" in u else ""
     ru = f"{r['rms2_pct'] / u['rms2_pct']:.2f}" if "rms2_pct" in u else ""
@@ -91,10 +95,30 @@ for (family, mesh, target), rows in sorted(runs.items(), key=lambda kv: row_key(
 print()
 for mesh, target in sorted({(m, tg) for (_, m, tg) in runs}, key=lambda mt: row_key(("Uniform",) + mt)):
     u = runs.get(("Uniform", mesh, target))
-    for fam, what in (("Adaptive", "radius 2 edges"), ("AdaptiveDefaultRadius", "radius 1 edge, the filter's default")):
+    if mesh not in mesh_order:
+        continue
+    for fam, what in (("Adaptive", "radius 2 edges"), ("AdaptiveDefaults", "the filter's defaults")):
         a = runs.get((fam, mesh, target))
         if a and u and not any(x.get("error_occurred") for x in a + u):
             print(f"- adaptive ({what}) / uniform time, {mesh} {target}: {ms(a, fam) / ms(u, 'Uniform'):.2f}×")
+# Adaptive defaults against the uniform filter, every case both ran (issue 20's acceptance).
+print()
+print("| mesh | target | vertices uniform / adaptive | Hausdorff % uniform / adaptive | change | RMS % uniform / adaptive "
+      "| change | min angle adaptive |")
+print("|---|---|---:|---:|---:|---:|---:|---:|")
+changes = []
+for (family, mesh, target), a in sorted(runs.items(), key=lambda kv: (kv[0][1], kv[0][2])):
+    u = runs.get(("UniformFilter", mesh, target))
+    if family != "AdaptiveDefaults" or not u or any(x.get("error_occurred") for x in a + u):
+        continue
+    a, u = a[0], u[0]
+    dh, dr = a["hausdorff2_pct"] / u["hausdorff2_pct"] - 1, a["rms2_pct"] / u["rms2_pct"] - 1
+    changes.append(dr)
+    print(f"| {mesh} | {target} | {int(u['vertices']):,} / {int(a['vertices']):,} "
+          f"| {u['hausdorff2_pct']:.3f} / {a['hausdorff2_pct']:.3f} | {100 * dh:+.0f}% "
+          f"| {u['rms2_pct']:.4f} / {a['rms2_pct']:.4f} | {100 * dr:+.0f}% | {a['angle_min']:.1f}° |")
+if changes:
+    print(f"\nRMS change, mean over the {len(changes)} cases above: {100 * statistics.mean(changes):+.0f}%")
 PY
 if [ -n "$plot" ]; then
   # matplotlib comes from Debian (python3-matplotlib, scripts/setup.sh): use the system python when

@@ -446,10 +446,9 @@ void registerAll() {
     const auto name = [&](const char* family) { return std::string(family) + "/" + c.key(); };
     // Uniform first: it records the vertex count the others are matched to.
     // Process CPU time: the engine's helper thread counts too.
-    for (const auto& [family, fn] :
-         {std::pair{"Uniform", BM_Uniform}, std::pair{"Adaptive", BM_Adaptive},
-          std::pair{"AdaptiveDefaults", BM_AdaptiveDefaults}, std::pair{"UniformFilter", BM_UniformFilter},
-          std::pair{"Cgal", BM_Cgal}})
+    for (const auto& [family, fn] : {std::pair{"Uniform", BM_Uniform}, std::pair{"Adaptive", BM_Adaptive},
+                                     std::pair{"AdaptiveDefaults", BM_AdaptiveDefaults},
+                                     std::pair{"UniformFilter", BM_UniformFilter}, std::pair{"Cgal", BM_Cgal}})
       benchmark::RegisterBenchmark(name(family).c_str(), fn, c)
           ->Unit(benchmark::kMillisecond)
           ->MeasureProcessCPUTime()

@@ -71,8 +71,8 @@ SurfaceDistance surfaceDistance(const TriMesh& from, const TriMesh& to, Progress
   CoreMesh target;
   toCoreMesh(to, target);
   // Sample q: vertex q for q < V, then per face its centroid and the midpoints of its three sides
-  // (or its centroid alone).
-  const long perFace = samples == DistanceSamples::VerticesMidpointsCentroids ? 4 : 1;
+  // (or nothing: the vertices alone).
+  const long perFace = samples == DistanceSamples::VerticesMidpointsCentroids ? 4 : 0;
   const long vertices = from.vertexCount(), total = vertices + perFace * from.faceCount();
   // vcglib's default grid has as many cells as faces, most of them empty (a surface fills few
   // cells of a volume), so the occupied ones hold tens of faces each. Sixteen cells per face (at

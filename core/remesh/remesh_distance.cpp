@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <exception>
@@ -28,22 +29,30 @@ double distanceToFace(const Vec3& p, const TriMesh& m, int f, Vec3* bary = nullp
   return (p - (w[0] * a + w[1] * b + w[2] * c)).norm();
 }
 
-/// Every face of a mesh as a bounding sphere (centroid, largest distance to a corner), to skip the
-/// faces that cannot be nearer than the nearest one found.
+/// Every face of a mesh as a bounding sphere (centroid, largest distance to a corner) and its
+/// plane (unit normal, offset), to skip the faces that cannot be nearer than the nearest one found:
+/// the distance to a face is at least the distance to its sphere and to its plane.
 struct FaceSpheres {
   std::vector<Vec3> centre;
   std::vector<double> radius;
-  explicit FaceSpheres(const TriMesh& m) : centre(m.faceCount()), radius(m.faceCount()) {
+  std::vector<Vec3> normal;    ///< unit normal; 0 for a face of zero area (its plane bounds nothing)
+  std::vector<double> offset;  ///< normal . centre
+  explicit FaceSpheres(const TriMesh& m)
+      : centre(m.faceCount()), radius(m.faceCount()), normal(m.faceCount()), offset(m.faceCount()) {
     for (int f = 0; f < m.faceCount(); ++f) {
       const Tri& t = m.triangles[f];
       centre[f] = (m.positions[t[0]] + m.positions[t[1]] + m.positions[t[2]]) / 3.0;
       for (int v : t) radius[f] = std::max(radius[f], (m.positions[v] - centre[f]).norm());
+      const Vec3 n = areaNormal(m, t);
+      const double length = n.norm();
+      normal[f] = length > 0.0 && std::isfinite(length) ? Vec3(n / length) : Vec3::Zero();
+      offset[f] = normal[f].dot(centre[f]);
     }
   }
-  /// Whether face f may be nearer to p than `bound` (its sphere is).
+  /// Whether face f may be nearer to p than `bound` (its plane and its sphere are).
   bool mayBeNearer(const Vec3& p, int f, double bound) const {
     const double reach = bound + radius[f];
-    return (p - centre[f]).squaredNorm() < reach * reach;
+    return std::abs(normal[f].dot(p) - offset[f]) < bound && (p - centre[f]).squaredNorm() < reach * reach;
   }
   /// The distance from p to the nearest face of m (at most `bound`), by testing every face whose
   /// sphere is nearer.
@@ -103,14 +112,22 @@ std::vector<int> originFace(const TriMesh& input, const std::vector<SurfacePoint
   return face;
 }
 
-/// Sample points with an upper bound of their distance to the other surface.
+/// Sample points with an upper bound of their distance to the other surface, and the number of
+/// the other measure's samples each stands for (an edge's midpoint, shared by two faces: 2).
 struct Bounds {
   std::vector<Vec3> point;
   std::vector<double> upper;
+  std::vector<double> weight;
 
-  void add(const Vec3& p, double d) {
+  void add(const Vec3& p, double d, double w = 1.0) {
     point.push_back(p);
     upper.push_back(d);
+    weight.push_back(w);
+  }
+  void append(const Bounds& o) {
+    point.insert(point.end(), o.point.begin(), o.point.end());
+    upper.insert(upper.end(), o.upper.begin(), o.upper.end());
+    weight.insert(weight.end(), o.weight.begin(), o.weight.end());
   }
 };
 
@@ -138,83 +155,81 @@ std::vector<int> dualFaces(const TriMesh& input, const TriMesh& output, const st
   return dual;
 }
 
-/// The output's vertices, against the input face holding their origin (they lie on it), and per
-/// face its centroid, walked over the input's faces (walkToNearest) from the face's dual input
-/// face (dualFaces) or else from each corner's origin, and the midpoints of its sides, walked from
-/// where the centroid's walk ended and from the side's first corner's origin.
-Bounds outputToInput(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell,
-                     const std::vector<SurfacePoint>& origin) {
-  const std::vector<int> start = originFace(input, origin);
-  const std::vector<int> dual = dualFaces(input, output, cell);
-  const FaceSpheres spheres(input);
-  Bounds b;
+/// What both directions read: the faces as spheres and planes, and where the output's vertices and
+/// faces lie on the input.
+struct Shared {
+  FaceSpheres inputFaces, outputFaces;
+  std::vector<int> start;  ///< originFace
+  std::vector<int> dual;   ///< dualFaces
+  Shared(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell,
+         const std::vector<SurfacePoint>& origin)
+      : inputFaces(input),
+        outputFaces(output),
+        start(originFace(input, origin)),
+        dual(dualFaces(input, output, cell)) {}
+};
+
+/// The output's vertices, against the input face holding their origin (they lie on it).
+void outputVertices(const TriMesh& input, const TriMesh& output, const Shared& s, Bounds& b) {
   for (int i = 0; i < output.vertexCount(); ++i)
-    b.add(output.positions[i], start[i] >= 0 ? distanceToFace(output.positions[i], input, start[i]) : kInf);
-  for (int f = 0; f < output.faceCount(); ++f) {
+    b.add(output.positions[i], s.start[i] >= 0 ? distanceToFace(output.positions[i], input, s.start[i]) : kInf);
+}
+
+/// Output faces [begin, end): each centroid, walked over the input's faces (walkToNearest) from the
+/// face's dual input face (dualFaces) or else from each corner's origin, and the midpoint of each
+/// side, once per edge (in the face of the smaller index, standing for both faces' samples),
+/// walked from where the centroid's walk ended and from the side's first corner's origin.
+void outputFaces(const TriMesh& input, const TriMesh& output, const Shared& s, int begin, int end, Bounds& b) {
+  for (int f = begin; f < end; ++f) {
     const Tri& t = output.triangles[f];
     const Vec3 &p = output.positions[t[0]], &q = output.positions[t[1]], &r = output.positions[t[2]];
     const Vec3 centroid = (p + q + r) / 3.0;
     std::pair<double, int> nearest = {kInf, -1};
-    if (dual[f] >= 0) {
-      nearest = walkToNearest(centroid, input, spheres, dual[f]);
+    if (s.dual[f] >= 0) {
+      nearest = walkToNearest(centroid, input, s.inputFaces, s.dual[f]);
     } else {  // the corners' origins may lie on different sides of a thin part: the nearest walk
       for (int k = 0; k < 3; ++k)
-        if (start[t[k]] >= 0) nearest = std::min(nearest, walkToNearest(centroid, input, spheres, start[t[k]]));
+        if (s.start[t[k]] >= 0)
+          nearest = std::min(nearest, walkToNearest(centroid, input, s.inputFaces, s.start[t[k]]));
     }
     b.add(centroid, nearest.first);
-    for (int k = 0; k < 3; ++k) {  // the side from corner k: from the centroid's face and from k's origin
+    for (int k = 0; k < 3; ++k) {  // the side from corner k to k + 1, across from corner k + 2
+      const int across = output.oppositeCorner[3 * f + (k + 2) % 3];
+      if (across >= 0 && across / 3 < f) continue;  // measured with the other face
       const Vec3 x = 0.5 * (output.positions[t[k]] + output.positions[t[(k + 1) % 3]]);
-      double d = nearest.second >= 0 ? walkToNearest(x, input, spheres, nearest.second).first : kInf;
-      if (start[t[k]] >= 0) d = std::min(d, walkToNearest(x, input, spheres, start[t[k]]).first);
-      b.add(x, d);
+      double d = nearest.second >= 0 ? walkToNearest(x, input, s.inputFaces, nearest.second).first : kInf;
+      if (s.start[t[k]] >= 0) d = std::min(d, walkToNearest(x, input, s.inputFaces, s.start[t[k]]).first);
+      b.add(x, d, across >= 0 ? 2.0 : 1.0);
     }
   }
-  return b;
 }
 
-/// The input's vertices and face centroids, each against the output triangles around the output
-/// vertices of its cells.
-Bounds inputToOutput(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell) {
-  const FaceSpheres spheres(output);
+/// The input's vertices, each against the output triangles around its cell's output vertex.
+Bounds inputVertices(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell, const Shared& s) {
   Bounds b;
-  std::vector<int> faces;
-  const auto addRing = [&](int c) {
-    if (c < 0 || c >= output.vertexCount()) return;
-    for (const int* k = output.cornersBegin(c); k != output.cornersEnd(c); ++k) faces.push_back(*k / 3);
-  };
-  const auto add = [&](const Vec3& p) {
-    double d = kInf;
-    for (int f : faces)
-      if (spheres.mayBeNearer(p, f, d)) d = std::min(d, distanceToFace(p, output, f));
-    b.add(p, d);
-  };
   for (int v = 0; v < input.vertexCount(); ++v) {
-    faces.clear();
-    addRing(cell[v]);
-    add(input.positions[v]);
-  }
-  for (const Tri& t : input.triangles) {
-    faces.clear();
-    addRing(cell[t[0]]);
-    if (cell[t[1]] != cell[t[0]]) addRing(cell[t[1]]);
-    if (cell[t[2]] != cell[t[0]] && cell[t[2]] != cell[t[1]]) addRing(cell[t[2]]);
-    const Vec3 &p = input.positions[t[0]], &q = input.positions[t[1]], &r = input.positions[t[2]];
-    add((p + q + r) / 3.0);
+    const Vec3& p = input.positions[v];
+    double d = kInf;
+    if (const int c = cell[v]; c >= 0 && c < output.vertexCount())
+      for (const int* k = output.cornersBegin(c); k != output.cornersEnd(c); ++k)
+        if (s.outputFaces.mayBeNearer(p, *k / 3, d)) d = std::min(d, distanceToFace(p, output, *k / 3));
+    b.add(p, d);
   }
   return b;
 }
 
 /// The exact largest distance, from the bounds taken largest first (see the header), and the RMS
-/// of the bounds (exact ones where measured). Empty if more than kMaxExactQueries were needed.
-std::optional<SurfaceDistance> certify(const Bounds& b, const TriMesh& to, int& queries) {
+/// of the bounds (exact ones where measured), weighted. Empty if more than kMaxExactQueries were
+/// needed.
+std::optional<SurfaceDistance> certify(const Bounds& b, const TriMesh& to, const FaceSpheres& spheres, int& queries) {
   SurfaceDistance d;
   if (b.point.empty()) return d;
-  const FaceSpheres spheres(to);
   std::vector<std::pair<double, int>> heap(b.point.size());
-  double sumSq = 0.0;
+  double sumSq = 0.0, samples = 0.0;
   for (size_t q = 0; q < b.point.size(); ++q) {
     heap[q] = {b.upper[q], static_cast<int>(q)};
-    sumSq += b.upper[q] * b.upper[q];
+    sumSq += b.weight[q] * b.upper[q] * b.upper[q];
+    samples += b.weight[q];
   }
   std::make_heap(heap.begin(), heap.end());
   double best = 0.0;
@@ -227,11 +242,43 @@ std::optional<SurfaceDistance> certify(const Bounds& b, const TriMesh& to, int& 
     const double e = spheres.nearest(b.point[q], to, upper);
     ++queries;
     best = std::max(best, e);
-    if (std::isfinite(upper)) sumSq -= upper * upper - e * e;
+    if (std::isfinite(upper)) sumSq -= b.weight[q] * (upper * upper - e * e);
   }
   d.max = best;
-  d.rms = std::sqrt(std::max(0.0, sumSq) / b.point.size());
+  d.rms = std::sqrt(std::max(0.0, sumSq) / samples);
   return d;
+}
+
+/// Runs `work(nextBlock)` here and, when a thread is to be had, on a helper too; exceptions are
+/// carried to this thread and thrown after the helper is joined.
+template <class Work>
+void onTwoThreads(const Work& work) {
+  std::exception_ptr failed;
+  const auto guarded = [&](bool helper) {
+    try {
+      work(helper);
+    } catch (...) {
+      if (helper)
+        failed = std::current_exception();
+      else
+        throw;
+    }
+  };
+  std::optional<std::thread> helper;
+  try {
+    helper.emplace(guarded, true);
+  } catch (const std::system_error&) {
+    guarded(true);  // no thread to be had: its share here, first
+  }
+  std::exception_ptr failedHere;
+  try {
+    guarded(false);
+  } catch (...) {
+    failedHere = std::current_exception();
+  }
+  if (helper) helper->join();
+  if (failedHere) std::rethrow_exception(failedHere);
+  if (failed) std::rethrow_exception(failed);
 }
 
 }  // namespace
@@ -240,36 +287,28 @@ RemeshDistances remeshDistances(const TriMesh& input, const TriMesh& output, con
                                 const std::vector<SurfacePoint>& origin) {
   RemeshDistances r;
   if (input.faceCount() == 0 || output.faceCount() == 0) return r;
+  const Shared shared(input, output, cell, origin);
+  // The helper measures the input's vertices, then both threads share the output's faces in
+  // blocks until none is left (the output's side is the larger).
+  constexpr int kBlock = 256;
+  std::atomic<int> nextBlock{0};
+  Bounds to[2], from;
+  onTwoThreads([&](bool helper) {
+    Bounds& mine = to[helper];
+    if (helper)
+      from = inputVertices(input, output, cell, shared);
+    else
+      outputVertices(input, output, shared, mine);
+    for (int block = nextBlock++; block * kBlock < output.faceCount(); block = nextBlock++)
+      outputFaces(input, output, shared, block * kBlock, std::min(output.faceCount(), (block + 1) * kBlock), mine);
+  });
+  to[0].append(to[1]);
   int toQueries = 0, fromQueries = 0;
-  bool toGrid = false;
-  std::exception_ptr failed;  // an exception may not leave a thread: it is thrown again here
-  const auto toInput = [&] {
-    try {
-      const std::optional<SurfaceDistance> d = certify(outputToInput(input, output, cell, origin), input, toQueries);
-      toGrid = !d;
-      r.toInput = d ? *d : surfaceDistance(output, input, {}, 1);
-    } catch (...) {
-      failed = std::current_exception();
-    }
-  };
-  std::optional<std::thread> helper;
-  try {
-    helper.emplace(toInput);
-  } catch (const std::system_error&) {
-    toInput();  // no thread to be had: one after the other
-  }
-  std::exception_ptr failedHere;  // the helper is joined before anything is thrown
-  try {
-    const std::optional<SurfaceDistance> d = certify(inputToOutput(input, output, cell), output, fromQueries);
-    r.gridDirections += !d;
-    r.fromInput = d ? *d : surfaceDistance(input, output, {}, helper ? 1 : 0, DistanceSamples::VerticesAndCentroids);
-  } catch (...) {
-    failedHere = std::current_exception();
-  }
-  if (helper) helper->join();
-  if (failedHere) std::rethrow_exception(failedHere);
-  if (failed) std::rethrow_exception(failed);
-  r.gridDirections += toGrid;
+  const std::optional<SurfaceDistance> toInput = certify(to[0], input, shared.inputFaces, toQueries);
+  const std::optional<SurfaceDistance> fromInput = certify(from, output, shared.outputFaces, fromQueries);
+  r.gridDirections = !toInput + !fromInput;
+  r.toInput = toInput ? *toInput : surfaceDistance(output, input);
+  r.fromInput = fromInput ? *fromInput : surfaceDistance(input, output, {}, 0, DistanceSamples::Vertices);
   r.exactQueries = toQueries + fromQueries;
   return r;
 }

@@ -27,7 +27,7 @@ void expectAsTheGrid(const std::string& name, const TriMesh& input, double fract
   ASSERT_TRUE(r) << r.status().message;
   const RemeshDistances d = remeshDistances(input, r->mesh, r->cell, r->origin);
   const SurfaceDistance to = surfaceDistance(r->mesh, input);
-  const SurfaceDistance from = surfaceDistance(input, r->mesh, {}, 0, DistanceSamples::VerticesAndCentroids);
+  const SurfaceDistance from = surfaceDistance(input, r->mesh, {}, 0, DistanceSamples::Vertices);
   std::printf(
       "%s at %.0f%%: to the input max %.6g (grid %.6g) rms %.6g (%.6g); from it max %.6g (%.6g) rms %.6g "
       "(%.6g); %d exact queries, %d directions by the grid\n",

@@ -37,6 +37,7 @@ struct FaceSpheres {
   std::vector<double> radius;
   std::vector<Vec3> normal;    ///< unit normal; 0 for a face of zero area (its plane bounds nothing)
   std::vector<double> offset;  ///< normal . centre
+  FaceSpheres() = default;
   explicit FaceSpheres(const TriMesh& m)
       : centre(m.faceCount()), radius(m.faceCount()), normal(m.faceCount()), offset(m.faceCount()) {
     for (int f = 0; f < m.faceCount(); ++f) {
@@ -161,12 +162,6 @@ struct Shared {
   FaceSpheres inputFaces, outputFaces;
   std::vector<int> start;  ///< originFace
   std::vector<int> dual;   ///< dualFaces
-  Shared(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell,
-         const std::vector<SurfacePoint>& origin)
-      : inputFaces(input),
-        outputFaces(output),
-        start(originFace(input, origin)),
-        dual(dualFaces(input, output, cell)) {}
 };
 
 /// The output's vertices, against the input face holding their origin (they lie on it).
@@ -287,7 +282,16 @@ RemeshDistances remeshDistances(const TriMesh& input, const TriMesh& output, con
                                 const std::vector<SurfacePoint>& origin) {
   RemeshDistances r;
   if (input.faceCount() == 0 || output.faceCount() == 0) return r;
-  const Shared shared(input, output, cell, origin);
+  Shared shared;
+  onTwoThreads([&](bool helper) {
+    if (helper) {
+      shared.inputFaces = FaceSpheres(input);
+    } else {
+      shared.outputFaces = FaceSpheres(output);
+      shared.start = originFace(input, origin);
+      shared.dual = dualFaces(input, output, cell);
+    }
+  });
   // The helper measures the input's vertices, then both threads share the output's faces in
   // blocks until none is left (the output's side is the larger).
   constexpr int kBlock = 256;
@@ -304,8 +308,13 @@ RemeshDistances remeshDistances(const TriMesh& input, const TriMesh& output, con
   });
   to[0].append(to[1]);
   int toQueries = 0, fromQueries = 0;
-  const std::optional<SurfaceDistance> toInput = certify(to[0], input, shared.inputFaces, toQueries);
-  const std::optional<SurfaceDistance> fromInput = certify(from, output, shared.outputFaces, fromQueries);
+  std::optional<SurfaceDistance> toInput, fromInput;
+  onTwoThreads([&](bool helper) {
+    if (helper)
+      toInput = certify(to[0], input, shared.inputFaces, toQueries);
+    else
+      fromInput = certify(from, output, shared.outputFaces, fromQueries);
+  });
   r.gridDirections = !toInput + !fromInput;
   r.toInput = toInput ? *toInput : surfaceDistance(output, input);
   r.fromInput = fromInput ? *fromInput : surfaceDistance(input, output, {}, 0, DistanceSamples::Vertices);

@@ -36,6 +36,9 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
                                 : std::string()) +
           ")" +
           (r.droppedSamples > 0 ? ", " + count(r.droppedSamples) + " left out (nearest to no vertex)" : std::string()) +
+          (r.collapsedVertices > 0
+               ? ", " + count(r.collapsedVertices) + " removed by edge collapses to reach the count asked for"
+               : std::string()) +
           "; covering radius " + formatNumber(r.coveringRadius, "%.4g") +
           (commit.weighted ? " (a travel time: distance over speed)" : std::string()) +
           (r.flippedEdges > 0 ? "; " + count(r.flippedEdges) + " edges flipped to Delaunay" : std::string()));

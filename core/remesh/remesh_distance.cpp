@@ -199,15 +199,19 @@ void outputFaces(const TriMesh& input, const TriMesh& output, const Shared& s, i
   }
 }
 
-/// The input's vertices, each against the output triangles around its cell's output vertex.
+/// The input's vertices, each against the output triangles around its cell's output vertex, then
+/// walked from the nearest of them.
 Bounds inputVertices(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell, const Shared& s) {
   Bounds b;
   for (int v = 0; v < input.vertexCount(); ++v) {
     const Vec3& p = input.positions[v];
     double d = kInf;
+    int nearest = -1;
     if (const int c = cell[v]; c >= 0 && c < output.vertexCount())
       for (const int* k = output.cornersBegin(c); k != output.cornersEnd(c); ++k)
-        if (s.outputFaces.mayBeNearer(p, *k / 3, d)) d = std::min(d, distanceToFace(p, output, *k / 3));
+        if (s.outputFaces.mayBeNearer(p, *k / 3, d))
+          if (const double e = distanceToFace(p, output, *k / 3); e < d) d = e, nearest = *k / 3;
+    if (nearest >= 0) d = std::min(d, walkToNearest(p, output, s.outputFaces, nearest).first);
     b.add(p, d);
   }
   return b;
@@ -279,7 +283,7 @@ void onTwoThreads(const Work& work) {
 }  // namespace
 
 RemeshDistances remeshDistances(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell,
-                                const std::vector<SurfacePoint>& origin) {
+                                const std::vector<SurfacePoint>& origin, bool voronoiCells) {
   RemeshDistances r;
   if (input.faceCount() == 0 || output.faceCount() == 0) return r;
   Shared shared;
@@ -299,9 +303,9 @@ RemeshDistances remeshDistances(const TriMesh& input, const TriMesh& output, con
   Bounds to[2], from;
   onTwoThreads([&](bool helper) {
     Bounds& mine = to[helper];
-    if (helper)
+    if (helper && voronoiCells)
       from = inputVertices(input, output, cell, shared);
-    else
+    else if (!helper)
       outputVertices(input, output, shared, mine);
     for (int block = nextBlock++; block * kBlock < output.faceCount(); block = nextBlock++)
       outputFaces(input, output, shared, block * kBlock, std::min(output.faceCount(), (block + 1) * kBlock), mine);
@@ -312,10 +316,10 @@ RemeshDistances remeshDistances(const TriMesh& input, const TriMesh& output, con
   onTwoThreads([&](bool helper) {
     if (helper)
       toInput = certify(to[0], input, shared.inputFaces, toQueries);
-    else
+    else if (voronoiCells)
       fromInput = certify(from, output, shared.outputFaces, fromQueries);
   });
-  r.gridDirections = !toInput + !fromInput;
+  r.gridDirections = !toInput + !fromInput;  // !voronoiCells: the input's side by the grid
   r.toInput = toInput ? *toInput : surfaceDistance(output, input);
   r.fromInput = fromInput ? *fromInput : surfaceDistance(input, output, {}, 0, DistanceSamples::Vertices);
   r.exactQueries = toQueries + fromQueries;

@@ -141,6 +141,10 @@ struct SurfaceRemeshResult {
   double coveringRadius = 0.0;  ///< largest distance to a sample after the sampling (a travel time with a metric)
   int addedSamples = 0;         ///< samples the repair of the triangulation added
   int droppedSamples = 0;       ///< samples inside faces left out (nearest to no vertex)
+  /// Vertices removed by edge collapses (edge_collapse.h) to bring an output the count search left
+  /// above the count asked for down to it: mesh.vertexCount() = sampledAsked + addedSamples -
+  /// droppedSamples - collapsedVertices.
+  int collapsedVertices = 0;
   int repairRounds = 0;
   /// Of repairRounds, those that added samples where output triangles crossed each other
   /// (DelaunayParams::maxCrossingRounds).

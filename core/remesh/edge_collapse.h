@@ -1,0 +1,38 @@
+// Edge collapses down to the vertex count asked for (issue 20: "the count asked for").
+//
+// Where the geodesic Delaunay triangulation needs more samples than asked to be valid (thin
+// parts and sliver-rich CAD parts at low counts: cow, cactus, dino, femur at 5%), the shortest
+// edges of the output are collapsed, each vertex onto a neighbour, so that every vertex stays a
+// sample on the input surface. A collapse of u onto v is made only if
+//   - it keeps the topology: u and v share exactly the two neighbours of the edge's two faces
+//     (the link condition), neither is on a boundary, and every vertex keeps three neighbours;
+//   - no face that moves turns over (its normal stays within 90 degrees of what it was);
+//   - no face that moves crosses another (facesCross, against the faces whose boxes overlap in a
+//     grid of the faces' boxes), so an output without crossing faces stays so.
+// Edges are taken shortest first, their length weighted by the metric (`weight` per vertex: P at
+// the vertex, 1 when uniform), so an adaptive density is kept; a pass moves each vertex at most
+// once (its neighbourhood is stale after), and passes go on until the count is reached or a pass
+// collapses nothing. The input's Voronoi cells follow: the cell of a removed vertex joins the cell
+// of the vertex it went onto.
+// Cost: O(E log E) per pass plus about 30 face-against-face tests per collapse.
+#pragma once
+
+#include <vector>
+
+#include "core/mesh/surface_point.h"
+#include "core/mesh/tri_mesh.h"
+
+namespace gr {
+
+struct CollapseResult {
+  int collapsed = 0;  ///< vertices removed
+  int passes = 0;
+};
+
+/// Collapses edges of `mesh` (manifold, oriented) until it has `targetCount` vertices or no edge
+/// can go. `origin` (per vertex) and `weight` (per vertex, > 0) are compacted with the vertices;
+/// `cell` (per input vertex, an index of `mesh`'s vertices or -1) is renumbered.
+CollapseResult collapseToCount(TriMesh& mesh, std::vector<SurfacePoint>& origin, std::vector<double>& weight,
+                               std::vector<int>& cell, int targetCount);
+
+}  // namespace gr

@@ -1,0 +1,129 @@
+// Edge collapses down to the count asked for (core/remesh/edge_collapse.h; issue 20, "the count
+// asked for"), judged independently of the code under test: topology recounted from the
+// triangles (test::recount), crossings by CGAL (oracle::selfIntersections, exact predicates).
+//  - collapseToCount on its own: an icosphere and a mesh with a boundary brought to a third of
+//    their vertices keep their topology, every kept vertex where it was, no face crossing;
+//  - remeshSurface on the thin meshes where the geodesic Delaunay triangulation needed far more
+//    samples than asked (before the collapses: cactus 59 for 31, cow 251 for 145, dino 289 for
+//    195, femur 250 for 194 at 5%; oblong 60 for 42 at 10%), uniform and adaptive: at most 1.1
+//    times the count, the input's topology, no crossing pair where the input has none and no more
+//    than the input's where it has some (cow: 101).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "core/remesh/edge_collapse.h"
+#include "core/remesh/remesh_surface.h"
+#include "tests/oracles/remesh_oracles.h"
+#include "tests/support/test_support.h"
+
+namespace gr {
+namespace {
+
+void expectSameTopology(const test::Recount& out, const test::Recount& in) {
+  EXPECT_TRUE(out.manifoldEdges && out.manifoldVertices && out.oriented);
+  EXPECT_EQ(out.isolated, 0);
+  EXPECT_EQ(out.components, in.components);
+  EXPECT_EQ(out.genusSum, in.genusSum);
+  EXPECT_EQ(out.boundaryLoops, in.boundaryLoops);
+}
+
+/// collapseToCount down to a third of the vertices, judged as the header says.
+void expectCollapsedToAThird(const TriMesh& mesh) {
+  TriMesh m = mesh;
+  std::vector<SurfacePoint> origin(m.vertexCount());
+  for (int v = 0; v < m.vertexCount(); ++v) origin[v] = SurfacePoint::atVertex(v);
+  std::vector<double> weight(m.vertexCount(), 1.0);
+  std::vector<int> cell(m.vertexCount());
+  for (int v = 0; v < m.vertexCount(); ++v) cell[v] = v;
+  const int target = m.vertexCount() / 3;
+  const CollapseResult r = collapseToCount(m, origin, weight, cell, target);
+  EXPECT_EQ(m.vertexCount(), target);
+  EXPECT_EQ(r.collapsed, mesh.vertexCount() - target);
+  expectSameTopology(test::recount(m.triangles, m.vertexCount()), test::recount(mesh.triangles, mesh.vertexCount()));
+  ASSERT_EQ(origin.size(), static_cast<size_t>(m.vertexCount()));
+  for (int v = 0; v < m.vertexCount(); ++v)  // each kept vertex is the input vertex its origin names
+    ASSERT_EQ(m.positions[v], mesh.positions[origin[v].vertex]) << v;
+  for (int x = 0; x < mesh.vertexCount(); ++x) ASSERT_TRUE(cell[x] >= 0 && cell[x] < m.vertexCount()) << x;
+  const Expected<std::vector<std::pair<int, int>>> crossing = oracle::selfIntersections(m);
+  ASSERT_TRUE(crossing) << crossing.status().message;
+  EXPECT_EQ(crossing->size(), 0u);
+}
+
+TEST(EdgeCollapse, ToAThirdKeepsTopologyAndCrossesNothing) {
+  {
+    SCOPED_TRACE("icosphere");
+    expectCollapsedToAThird(test::icosphere(3));
+  }
+  {
+    SCOPED_TRACE("mesh with a boundary");  // a hemisphere-like cap: the boundary collapses along itself
+    const TriMesh sphere = test::icosphere(3);
+    std::vector<Tri> upper;
+    for (const Tri& t : sphere.triangles)
+      if (sphere.positions[t[0]].z() > -0.2 && sphere.positions[t[1]].z() > -0.2 && sphere.positions[t[2]].z() > -0.2)
+        upper.push_back(t);
+    Expected<TriMesh> cap = buildTriMesh(sphere.positions, upper);
+    ASSERT_TRUE(cap);
+    // Drop the vertices no face uses, so that the recount has no isolated vertices.
+    std::vector<int> index(cap->vertexCount(), -1);
+    std::vector<Vec3> used;
+    for (const Tri& t : upper)
+      for (int v : t)
+        if (index[v] < 0) index[v] = static_cast<int>(used.size()), used.push_back(sphere.positions[v]);
+    for (Tri& t : upper)
+      for (int& v : t) v = index[v];
+    Expected<TriMesh> compact = buildTriMesh(used, upper);
+    ASSERT_TRUE(compact);
+    ASSERT_EQ(test::recount(compact->triangles, compact->vertexCount()).boundaryLoops, 1);
+    expectCollapsedToAThird(*compact);
+  }
+}
+
+/// remeshSurface (uniform preset, or the adaptive one under the total curvature's metric) at a
+/// fraction of the mesh's vertices.
+void expectTheCountAskedFor(const std::string& name, double fraction, bool adaptive) {
+  SCOPED_TRACE(name + (adaptive ? " adaptive" : " uniform"));
+  const TriMesh input = test::loadRealMesh(name);
+  ASSERT_GT(input.vertexCount(), 0);
+  const int target = static_cast<int>(fraction * input.vertexCount());
+  SurfaceRemeshResult r;
+  if (adaptive) {
+    AdaptiveRemeshParams params;
+    params.remesh.sampling.targetCount = target;
+    params.remesh.measure = false;
+    Expected<AdaptiveRemeshResult> a = remeshAdaptive(input, {}, params);
+    ASSERT_TRUE(a) << a.status().message;
+    r = std::move(a->remesh);
+  } else {
+    SurfaceRemeshParams params;
+    params.sampling.targetCount = target;
+    params.measure = false;
+    Expected<SurfaceRemeshResult> u = remeshSurface(input, params);
+    ASSERT_TRUE(u) << u.status().message;
+    r = std::move(*u);
+  }
+  const Expected<std::vector<std::pair<int, int>>> before = oracle::selfIntersections(input);
+  const Expected<std::vector<std::pair<int, int>>> after = oracle::selfIntersections(r.mesh);
+  ASSERT_TRUE(before && after);
+  std::printf("%-10s %s %2.0f%%: %d asked, %d vertices (%d added, %d collapsed); crossing pairs %zu (input %zu)\n",
+              name.c_str(), adaptive ? "adaptive" : "uniform ", 100 * fraction, target, r.mesh.vertexCount(),
+              r.addedSamples, r.collapsedVertices, after->size(), before->size());
+  EXPECT_LE(r.mesh.vertexCount(), 1.1 * target);
+  EXPECT_EQ(r.mesh.vertexCount(), r.sampledAsked + r.addedSamples - r.droppedSamples - r.collapsedVertices);
+  expectSameTopology(test::recount(r.mesh.triangles, r.mesh.vertexCount()),
+                     test::recount(input.triangles, input.vertexCount()));
+  EXPECT_LE(after->size(), before->size());
+  for (int x = 0; x < input.vertexCount(); ++x) ASSERT_TRUE(r.cell[x] >= 0 && r.cell[x] < r.mesh.vertexCount());
+}
+
+TEST(EdgeCollapse, ThinMeshesGetTheCountAskedFor) {
+  for (const bool adaptive : {false, true}) {
+    for (const char* name : {"cactus.off", "cow.off", "dino.off", "femur.off"}) expectTheCountAskedFor(name, 0.05, adaptive);
+    expectTheCountAskedFor("oblong.off", 0.10, adaptive);
+  }
+}
+
+}  // namespace
+}  // namespace gr

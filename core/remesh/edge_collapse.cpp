@@ -15,9 +15,7 @@ namespace {
 
 struct Box {
   Vec3 lo, hi;
-  bool overlaps(const Box& o) const {
-    return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all();
-  }
+  bool overlaps(const Box& o) const { return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all(); }
 };
 
 Box boxOf(const TriMesh& m, const Tri& t) {
@@ -108,8 +106,8 @@ class CollapsePass {
     return done;
   }
 
-  std::vector<int> onto;         ///< per vertex, the vertex it went onto, or -1
-  std::vector<char> faceAlive;   ///< 0 for the two faces of each collapsed edge
+  std::vector<int> onto;        ///< per vertex, the vertex it went onto, or -1
+  std::vector<char> faceAlive;  ///< 0 for the two faces of each collapsed edge
 
  private:
   void touchAround(int v) {

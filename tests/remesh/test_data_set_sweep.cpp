@@ -5,6 +5,7 @@
 // non-manifold mesh, more samples than vertices. Never a crash, never NotConverged.
 // The count asked for (issue 20): at most 1.1 times it wherever it is at least 20 times the
 // input's components + genus + boundary loops (recounted); the printed lines list every case.
+// The same for the adaptive remeshing with its defaults at 5%, 10% and 30%.
 //
 // It runs remeshSurface, what the filters run: inputs whose faces disagree on orientation
 // (blobby-shuffled.off) are remeshed through an oriented copy, meshes with more components than
@@ -15,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/field/adaptive_metric.h"
 #include "core/mesh/vcg_mesh.h"
 #include "core/remesh/remesh_surface.h"
 #include "tests/support/test_support.h"
@@ -72,6 +74,41 @@ TEST_P(DataSetSweep, ValidOutputWithTheInputTopologyOrAClearError) {
     }
     for (int v = 0; v < out.vertexCount(); ++v)  // every output vertex sits on the input, where its origin says
       ASSERT_LT((r->origin[v].position(input) - out.positions[v]).norm(), 1e-9 * input.boundingBoxDiagonal());
+  }
+}
+
+// The adaptive remeshing with its defaults (total curvature, radius from the target) at 5%, 10%
+// and 30%: the same validity, topology and count rule; non-manifold inputs refused as such.
+TEST_P(DataSetSweep, AdaptiveWithDefaultsValidAtTheCountAskedFor) {
+  const std::string name = GetParam();
+  Expected<TriMesh> loaded = loadTriMesh(test::meshPath(name));
+  if (!loaded) return;  // point clouds: the test above holds their error
+  const TriMesh& input = *loaded;
+  const test::Recount in = test::recount(input.triangles, input.vertexCount());
+  const int usable = input.vertexCount() - in.isolated;
+  const int handles = in.components + in.genusSum + in.boundaryLoops;
+  for (const double fraction : {0.05, 0.1, 0.3}) {
+    const int target = static_cast<int>(fraction * input.vertexCount());
+    if (target < 1 || target > usable) continue;
+    SCOPED_TRACE(name + ", adaptive, " + std::to_string(target) + " samples");
+    AdaptiveRemeshParams params;
+    params.remesh.sampling.targetCount = target;
+    params.remesh.measure = false;
+    const Expected<AdaptiveRemeshResult> r = remeshAdaptive(input, {}, params);
+    if (!(in.manifoldEdges && in.manifoldVertices)) {
+      ASSERT_FALSE(r);
+      EXPECT_EQ(r.status().code, StatusCode::NonManifold) << r.status().message;
+      continue;
+    }
+    ASSERT_TRUE(r) << r.status().message;
+    const TriMesh& out = r->remesh.mesh;
+    test::expectValidWithTopologyOf(test::recount(out.triangles, out.vertexCount()), in);
+    const bool countRule = target >= 20 * handles;
+    std::printf("%-28s %5d asked, adaptive (rule %s): %5d vertices (%d collapsed)\n", name.c_str(), target,
+                countRule ? "applies" : "exempt", out.vertexCount(), r->remesh.collapsedVertices);
+    if (countRule) {
+      EXPECT_LE(out.vertexCount(), 1.1 * target);
+    }
   }
 }
 

@@ -120,7 +120,8 @@ void expectTheCountAskedFor(const std::string& name, double fraction, bool adapt
 
 TEST(EdgeCollapse, ThinMeshesGetTheCountAskedFor) {
   for (const bool adaptive : {false, true}) {
-    for (const char* name : {"cactus.off", "cow.off", "dino.off", "femur.off"}) expectTheCountAskedFor(name, 0.05, adaptive);
+    for (const char* name : {"cactus.off", "cow.off", "dino.off", "femur.off"})
+      expectTheCountAskedFor(name, 0.05, adaptive);
     expectTheCountAskedFor("oblong.off", 0.10, adaptive);
   }
 }

@@ -82,14 +82,16 @@ class CollapsePass {
         touched_(mesh.vertexCount(), 0),
         onBoundary_(mesh.vertexCount(), 0) {}
 
-  /// Collapses up to `excess` edges; returns how many went.
-  int run(int excess) {
+  /// Collapses up to `excess` edges (only edges of the faces flagged in `faces`, if given);
+  /// returns how many went.
+  int run(int excess, const std::vector<char>* faces = nullptr) {
     std::vector<std::pair<double, std::array<int, 2>>> edges;
     for (int c = 0; c < 3 * m_.faceCount(); ++c) {
       const int o = m_.oppositeCorner[c];
       const int p = m_.vertex(TriMesh::next(c)), q = m_.vertex(TriMesh::prev(c));
       if (o < 0) onBoundary_[p] = onBoundary_[q] = 1;
-      if (o > c || o < 0)  // each edge once
+      const bool wanted = !faces || (*faces)[c / 3] || (o >= 0 && (*faces)[o / 3]);
+      if (wanted && (o > c || o < 0))  // each edge once
         edges.push_back({(m_.positions[p] - m_.positions[q]).norm() * 0.5 * (weight_[p] + weight_[q]), {p, q}});
     }
     std::sort(edges.begin(), edges.end());
@@ -246,6 +248,25 @@ CollapseResult collapseToCount(TriMesh& mesh, std::vector<SurfacePoint>& origin,
     TriMesh work = mesh;  // the pass rewrites triangles in place; kept only if valid
     CollapsePass pass(work, weight);
     const int done = pass.run(mesh.vertexCount() - targetCount);
+    ++r.passes;
+    if (done == 0 || !compact(work, pass, origin, weight, cell)) break;
+    mesh = std::move(work);
+    r.collapsed += done;
+  }
+  return r;
+}
+
+CollapseResult collapseCrossingFaces(TriMesh& mesh, std::vector<SurfacePoint>& origin, std::vector<double>& weight,
+                                     std::vector<int>& cell, const CrossingPairs& pairsOf, int rounds) {
+  CollapseResult r;
+  for (int round = 0; round < rounds; ++round) {
+    const std::vector<std::pair<int, int>> pairs = pairsOf(mesh, cell);
+    if (pairs.empty()) break;
+    std::vector<char> crossing(mesh.faceCount(), 0);
+    for (const auto& [f, g] : pairs) crossing[f] = crossing[g] = 1;
+    TriMesh work = mesh;
+    CollapsePass pass(work, weight);
+    const int done = pass.run(static_cast<int>(2 * pairs.size()), &crossing);
     ++r.passes;
     if (done == 0 || !compact(work, pass, origin, weight, cell)) break;
     mesh = std::move(work);

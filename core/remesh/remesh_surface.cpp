@@ -497,6 +497,36 @@ void relaxCollapsed(const TriMesh& surface, const std::vector<char>& flipped, co
   }
 }
 
+/// The metric at the output's vertices (P at their origins; 1 when uniform): the collapses' weights.
+std::vector<double> outputWeights(const TriMesh& input, const Metric& metric, const SurfaceRemeshResult& r) {
+  if (!metric.isUniform())
+    if (Expected<Metric> atOutput = transferMetric(metric, input, r.origin); atOutput && !atOutput->isUniform())
+      return atOutput->P;
+  return std::vector<double>(r.mesh.vertexCount(), 1.0);
+}
+
+/// Issue 20: an output whose faces still cross away from where the input crosses itself (the
+/// triangulation's crossing repair ran out; armadillo, adaptive, at 30%: 6 pairs) loses those
+/// crossing faces by edge collapses (collapseCrossingFaces), then is relaxed as a collapsed one.
+/// The input's crossing vertices (`mayCross`, per vertex of the mesh the fronts ran on, whose
+/// first vertices are the input's) excuse the output vertices of their cells.
+void collapseCrossings(const TriMesh& input, const TriMesh& surface, const std::vector<char>& flipped,
+                       const Metric& metric, const SurfaceRemeshParams& params,
+                       const std::function<std::vector<char>()>& mayCross, SurfaceRemeshResult& r) {
+  if (r.crossingPairs == 0 || !mayCross) return;
+  std::vector<char> inputCrossing = mayCross();
+  inputCrossing.resize(input.vertexCount(), 0);
+  const CrossingPairs away = [&inputCrossing](const TriMesh& mesh, const std::vector<int>& cell) {
+    return crossingsAwayFromInput(mesh, cell, inputCrossing, selfIntersectingFaces(mesh));
+  };
+  std::vector<double> weight = outputWeights(input, metric, r);
+  const CollapseResult collapsed = collapseCrossingFaces(r.mesh, r.origin, weight, r.cell, away);
+  if (collapsed.collapsed == 0) return;
+  r.collapsedVertices += collapsed.collapsed;
+  r.crossingPairs = static_cast<int>(selfIntersectingFaces(r.mesh).size());
+  if (params.relaxation.iterations > 0) relaxCollapsed(surface, flipped, params, r);
+}
+
 /// Issue 20: an output still above the count asked for (by more than countTolerance) after the
 /// count search, as thin parts at low counts give, is brought down to it by edge collapses
 /// (edge_collapse.h), weighted by the metric, then relaxed on the oriented input as the
@@ -506,10 +536,7 @@ void collapseToAsked(const TriMesh& input, const TriMesh& surface, const std::ve
                      const Metric& metric, const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
   const int target = params.sampling.targetCount;
   if (target <= 0 || r.mesh.vertexCount() <= (1.0 + params.countTolerance) * target) return;
-  std::vector<double> weight(r.mesh.vertexCount(), 1.0);
-  if (!metric.isUniform())
-    if (Expected<Metric> atOutput = transferMetric(metric, input, r.origin); atOutput && !atOutput->isUniform())
-      weight = atOutput->P;
+  std::vector<double> weight = outputWeights(input, metric, r);
   const CollapseResult collapsed = collapseToCount(r.mesh, r.origin, weight, r.cell, target);
   r.collapsedVertices = collapsed.collapsed;
   if (collapsed.collapsed == 0) return;
@@ -517,10 +544,13 @@ void collapseToAsked(const TriMesh& input, const TriMesh& surface, const std::ve
   if (params.relaxation.iterations > 0) relaxCollapsed(surface, flipped, params, r);
 }
 
-/// collapseToAsked, and the fewest vertices reached without crossing faces updated with its output.
+/// collapseToAsked, collapseCrossings, and the fewest vertices reached without crossing faces
+/// updated with the output.
 void collapseToAskedAndCount(const TriMesh& input, const TriMesh& surface, const std::vector<char>& flipped,
-                             const Metric& metric, const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
+                             const Metric& metric, const SurfaceRemeshParams& params,
+                             const std::function<std::vector<char>()>& mayCross, SurfaceRemeshResult& r) {
   collapseToAsked(input, surface, flipped, metric, params, r);
+  collapseCrossings(input, surface, flipped, metric, params, mayCross, r);
   if (r.collapsedVertices > 0 && r.crossingPairs == 0)
     r.fewestCount = r.fewestCount > 0 ? std::min(r.fewestCount, r.mesh.vertexCount()) : r.mesh.vertexCount();
 }
@@ -571,7 +601,7 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   r.looseFaces = input.looseFaceCount();
   r.looksLikeTriangleSoup = TriMesh::looksLikeTriangleSoup(r.looseFaces, input.faceCount());
   lap(clock);
-  collapseToAskedAndCount(input, surface, oriented->flipped, metric, params, r);
+  collapseToAskedAndCount(input, surface, oriented->flipped, metric, params, searchParams.triangulation.mayCross, r);
   r.times.triangulation += lap(clock);
   if (params.measure)
     if (Status s = measureOutput(input, r, progress.sub(remeshShare, 1.0)); !s) return s;

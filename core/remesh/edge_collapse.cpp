@@ -118,11 +118,12 @@ class CollapsePass {
       for (int x : m_.triangles[*c / 3]) touched_[x] = 1;
   }
 
-  /// The other vertices of v's faces (each face's two, so every neighbour twice on a closed fan).
+  /// The other vertices of v's faces that are still there (a third vertex of an earlier collapse
+  /// in this pass lost one), each face's two, sorted and unique.
   std::vector<int> neighbours(int v) const {
     std::vector<int> n;
     for (const int* c = m_.cornersBegin(v); c != m_.cornersEnd(v); ++c)
-      n.insert(n.end(), {m_.vertex(TriMesh::next(*c)), m_.vertex(TriMesh::prev(*c))});
+      if (faceAlive[*c / 3]) n.insert(n.end(), {m_.vertex(TriMesh::next(*c)), m_.vertex(TriMesh::prev(*c))});
     std::sort(n.begin(), n.end());
     n.erase(std::unique(n.begin(), n.end()), n.end());
     return n;

@@ -12,7 +12,7 @@
 //     faces as surfaceDistance counts it) from where the centroid's walk ended and from the side's
 //     first corner's origin;
 //   - an input vertex v is measured against the output triangles around its cell's output vertex
-//     cell[v].
+//     cell[v], then walked over the output's faces from the nearest of them (a local minimum).
 // Each such distance is an upper bound of the distance to the nearest point of the other surface,
 // equal to it wherever that point lies in the neighbourhood (nearly every sample on a remesh).
 // The largest distance is then made exact: samples are taken largest bound first and measured

@@ -184,23 +184,23 @@ Stages stagesOf(const gr::SurfaceRemeshResult& r) {
   return s;
 }
 
-/// gr::remeshSurface under `metric` with the adaptive preset; the error status on failure.
-gr::Expected<Run> remesh(const gr::TriMesh& mesh, const gr::Metric& metric, int target) {
-  gr::Expected<gr::SurfaceRemeshResult> r = gr::remeshSurface(mesh, metric, remeshParams(target));
+/// A remesh's result with its stages' times; the error status on failure.
+gr::Expected<Run> runOf(gr::Expected<gr::SurfaceRemeshResult> r) {
   if (!r) return r.status();
   Run run{std::move(*r), {}};
   run.seconds = stagesOf(run.result);
   return run;
 }
 
-/// gr::remeshAdaptive, what the adaptive filter runs: curvature, speed, metric, then the remesh.
-gr::Expected<Run> remeshAdaptive(const gr::TriMesh& mesh, int target, gr::Metric* metricOut = nullptr) {
-  gr::AdaptiveRemeshParams params;
-  params.metric.field = gr::AdaptiveField::TotalCurvature;
-  params.metric.curvature.radius = kRadiusInEdges * mesh.meanEdgeLength();
-  params.metric.speed.mapping = gr::SpeedMapping::Attractive;
-  params.metric.speed.strength = kStrength;
-  params.remesh = remeshParams(target);
+/// gr::remeshSurface under `metric` with the adaptive preset.
+gr::Expected<Run> remesh(const gr::TriMesh& mesh, const gr::Metric& metric, int target) {
+  return runOf(gr::remeshSurface(mesh, metric, remeshParams(target)));
+}
+
+/// gr::remeshAdaptive with `params`, what the adaptive filter runs: curvature, speed, metric, then
+/// the remesh; the metric's time is the call's less the remesh's stages.
+gr::Expected<Run> runAdaptive(const gr::TriMesh& mesh, const gr::AdaptiveRemeshParams& params,
+                              gr::Metric* metricOut = nullptr) {
   const auto t0 = std::chrono::steady_clock::now();
   gr::Expected<gr::AdaptiveRemeshResult> r = gr::remeshAdaptive(mesh, {}, params);
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -210,6 +210,17 @@ gr::Expected<Run> remeshAdaptive(const gr::TriMesh& mesh, int target, gr::Metric
   run.seconds.metric = total - run.seconds.total();
   if (metricOut) *metricOut = r->metric.speed.metric;
   return run;
+}
+
+/// The adaptive run of Fig. 14: total curvature over 2 mean edge lengths, Attractive, strength 16.
+gr::Expected<Run> remeshAdaptive(const gr::TriMesh& mesh, int target, gr::Metric* metricOut = nullptr) {
+  gr::AdaptiveRemeshParams params;
+  params.metric.field = gr::AdaptiveField::TotalCurvature;
+  params.metric.curvature.radius = kRadiusInEdges * mesh.meanEdgeLength();
+  params.metric.speed.mapping = gr::SpeedMapping::Attractive;
+  params.metric.speed.strength = kStrength;
+  params.remesh = remeshParams(target);
+  return runAdaptive(mesh, params, metricOut);
 }
 
 /// The uniform result's final vertex count per case: what the other methods are matched to.
@@ -312,19 +323,10 @@ void BM_AdaptiveDefaults(benchmark::State& state, const Case& c) {
   BenchMesh* bm = getMesh(state, c);
   if (!bm) return;
   const int target = targetCount(c, *bm);
-  timeRuns(state, *bm, target, [&]() -> gr::Expected<Run> {
-    gr::AdaptiveRemeshParams params;
-    params.remesh.sampling.targetCount = target;
-    params.remesh.measure = false;
-    const auto t0 = std::chrono::steady_clock::now();
-    gr::Expected<gr::AdaptiveRemeshResult> r = gr::remeshAdaptive(bm->tri, {}, params);
-    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (!r) return r.status();
-    Run run{std::move(r->remesh), {}};
-    run.seconds = stagesOf(run.result);
-    run.seconds.metric = total - run.seconds.total();
-    return run;
-  });
+  gr::AdaptiveRemeshParams params;
+  params.remesh.sampling.targetCount = target;
+  params.remesh.measure = false;
+  timeRuns(state, *bm, target, [&] { return runAdaptive(bm->tri, params); });
 }
 
 /// The uniform filter with its defaults (relaxation included), same target.
@@ -332,16 +334,10 @@ void BM_UniformFilter(benchmark::State& state, const Case& c) {
   BenchMesh* bm = getMesh(state, c);
   if (!bm) return;
   const int target = targetCount(c, *bm);
-  timeRuns(state, *bm, target, [&]() -> gr::Expected<Run> {
-    gr::SurfaceRemeshParams params;
-    params.sampling.targetCount = target;
-    params.measure = false;
-    gr::Expected<gr::SurfaceRemeshResult> r = gr::remeshSurface(bm->tri, params);
-    if (!r) return r.status();
-    Run run{std::move(*r), {}};
-    run.seconds = stagesOf(run.result);
-    return run;
-  });
+  gr::SurfaceRemeshParams params;
+  params.sampling.targetCount = target;
+  params.measure = false;
+  timeRuns(state, *bm, target, [&] { return runOf(gr::remeshSurface(bm->tri, params)); });
 }
 
 // ------------------------------------------------------------------------------------------------

@@ -4,12 +4,10 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <numeric>
-#include <optional>
 #include <string>
-#include <system_error>
-#include <thread>
+
+#include "core/base/two_threads.h"
 
 namespace gr {
 namespace {
@@ -122,33 +120,14 @@ void buildOppositeCorners(TriMesh& m, const std::vector<std::array<int, 2>>& oth
   }
 }
 
-/// Runs work(begin, end) over [0, n) in two halves, the second on a helper thread when n is large
-/// enough to pay for one (bunny00's 38k vertices: the topology in 9 ms instead of 15) and a
-/// thread is to be had; an exception of the helper is thrown here after it is joined.
+/// Runs work(begin, end) over [0, n) in two halves, the second on a helper thread (onTwoThreads)
+/// when n is large enough to pay for one (bunny00's 38k vertices: the topology in 11.7 ms instead
+/// of 15).
 template <class Work>
 void overTwoHalves(int n, const Work& work) {
   constexpr int kMinForThread = 20000;
-  const int half = n / 2;
-  std::exception_ptr failed;
-  std::optional<std::thread> helper;
-  if (n >= kMinForThread) try {
-      helper.emplace([&] {
-        try {
-          work(half, n);
-        } catch (...) {
-          failed = std::current_exception();
-        }
-      });
-    } catch (const std::system_error&) {}
-  std::exception_ptr failedHere;
-  try {
-    work(0, helper ? half : n);
-  } catch (...) {
-    failedHere = std::current_exception();
-  }
-  if (helper) helper->join();
-  if (failedHere) std::rethrow_exception(failedHere);
-  if (failed) std::rethrow_exception(failed);
+  if (n < kMinForThread) return work(0, n);
+  onTwoThreads([&](bool helper) { helper ? work(n / 2, n) : work(0, n / 2); });
 }
 
 /// For each corner, finds the face across its opposite edge {p, q} among the corners of p, the

@@ -240,20 +240,27 @@ bool compact(TriMesh& mesh, const CollapsePass& pass, std::vector<SurfacePoint>&
   return true;
 }
 
+/// One pass of up to `excess` collapses (of the edges of `faces`, if given) on a copy of `mesh`,
+/// kept only if valid; counted in `r`. False when nothing went.
+bool collapsePass(TriMesh& mesh, std::vector<SurfacePoint>& origin, std::vector<double>& weight, std::vector<int>& cell,
+                  int excess, const std::vector<char>* faces, CollapseResult& r) {
+  TriMesh work = mesh;  // the pass rewrites triangles in place
+  CollapsePass pass(work, weight);
+  const int done = pass.run(excess, faces);
+  ++r.passes;
+  if (done == 0 || !compact(work, pass, origin, weight, cell)) return false;
+  mesh = std::move(work);
+  r.collapsed += done;
+  return true;
+}
+
 }  // namespace
 
 CollapseResult collapseToCount(TriMesh& mesh, std::vector<SurfacePoint>& origin, std::vector<double>& weight,
                                std::vector<int>& cell, int targetCount) {
   CollapseResult r;
-  while (mesh.vertexCount() > targetCount) {
-    TriMesh work = mesh;  // the pass rewrites triangles in place; kept only if valid
-    CollapsePass pass(work, weight);
-    const int done = pass.run(mesh.vertexCount() - targetCount);
-    ++r.passes;
-    if (done == 0 || !compact(work, pass, origin, weight, cell)) break;
-    mesh = std::move(work);
-    r.collapsed += done;
-  }
+  while (mesh.vertexCount() > targetCount)
+    if (!collapsePass(mesh, origin, weight, cell, mesh.vertexCount() - targetCount, nullptr, r)) break;
   return r;
 }
 
@@ -265,13 +272,7 @@ CollapseResult collapseCrossingFaces(TriMesh& mesh, std::vector<SurfacePoint>& o
     if (pairs.empty()) break;
     std::vector<char> crossing(mesh.faceCount(), 0);
     for (const auto& [f, g] : pairs) crossing[f] = crossing[g] = 1;
-    TriMesh work = mesh;
-    CollapsePass pass(work, weight);
-    const int done = pass.run(static_cast<int>(2 * pairs.size()), &crossing);
-    ++r.passes;
-    if (done == 0 || !compact(work, pass, origin, weight, cell)) break;
-    mesh = std::move(work);
-    r.collapsed += done;
+    if (!collapsePass(mesh, origin, weight, cell, static_cast<int>(2 * pairs.size()), &crossing, r)) break;
   }
   return r;
 }

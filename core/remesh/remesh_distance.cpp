@@ -5,14 +5,12 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
-#include <exception>
 #include <limits>
 #include <optional>
-#include <system_error>
-#include <thread>
 #include <unordered_map>
 #include <utility>
 
+#include "core/base/two_threads.h"
 #include "core/mesh/face_geometry.h"
 
 namespace gr {
@@ -246,38 +244,6 @@ std::optional<SurfaceDistance> certify(const Bounds& b, const TriMesh& to, const
   d.max = best;
   d.rms = std::sqrt(std::max(0.0, sumSq) / samples);
   return d;
-}
-
-/// Runs `work(nextBlock)` here and, when a thread is to be had, on a helper too; exceptions are
-/// carried to this thread and thrown after the helper is joined.
-template <class Work>
-void onTwoThreads(const Work& work) {
-  std::exception_ptr failed;
-  const auto guarded = [&](bool helper) {
-    try {
-      work(helper);
-    } catch (...) {
-      if (helper)
-        failed = std::current_exception();
-      else
-        throw;
-    }
-  };
-  std::optional<std::thread> helper;
-  try {
-    helper.emplace(guarded, true);
-  } catch (const std::system_error&) {
-    guarded(true);  // no thread to be had: its share here, first
-  }
-  std::exception_ptr failedHere;
-  try {
-    guarded(false);
-  } catch (...) {
-    failedHere = std::current_exception();
-  }
-  if (helper) helper->join();
-  if (failedHere) std::rethrow_exception(failedHere);
-  if (failed) std::rethrow_exception(failed);
 }
 
 }  // namespace

@@ -156,6 +156,22 @@ std::vector<std::pair<int, int>> awayFromInputCrossings(const SurfaceRemeshParam
   return crossingsAwayFromInput(dual.mesh, dual.cell, params.triangulation.mayCross(), std::move(pairs));
 }
 
+/// Flags (one per vertex of `mesh`) the corners of the faces in `pairs` and, with `ring`, their
+/// neighbours: the vertices a relaxation that made those faces cross watches or pins next
+/// (RelaxationGuard).
+void flagCrossingCorners(const TriMesh& mesh, const std::vector<std::pair<int, int>>& pairs, bool ring,
+                         std::vector<char>& flags) {
+  flags.resize(mesh.vertexCount(), 0);
+  for (const auto& [f, g] : pairs)
+    for (int face : {f, g})
+      for (int v : mesh.triangles[face]) {
+        flags[v] = 1;
+        if (ring)
+          for (const int* c = mesh.cornersBegin(v); c != mesh.cornersEnd(v); ++c)
+            flags[mesh.vertex(TriMesh::next(*c))] = 1;
+      }
+}
+
 /// The relaxation of d's dual, kept from making its faces cross: a relaxed output with crossing
 /// pairs (selfIntersectingFaces, away from the input's own crossings: awayFromInputCrossings) is
 /// relaxed again from the triangulation, the corners of its
@@ -174,7 +190,6 @@ Status relaxWithoutCrossing(const FrontSurface& front, const TriMesh& surface, c
   constexpr int kWatchRounds = 2, kPinRounds = 4;
   constexpr size_t kMaxWatchedPairs = 64;  // beyond: no watching, the relaxation kept if no worse
   const DelaunayResult unrelaxed = d.dual;
-  const int n = unrelaxed.mesh.vertexCount();
   RelaxationGuard guard;
   std::optional<SampledDual> best;
   std::optional<size_t> before;  // crossing pairs of the triangulation, counted when needed
@@ -199,16 +214,7 @@ Status relaxWithoutCrossing(const FrontSurface& front, const TriMesh& surface, c
       }
       break;
     }
-    std::vector<char>& flags = round < kWatchRounds ? guard.watched : guard.pinned;
-    flags.resize(n, 0);
-    for (const auto& [f, g] : pairs)
-      for (int face : {f, g})
-        for (int v : d.dual.mesh.triangles[face]) {
-          flags[v] = 1;
-          if (round < kWatchRounds)
-            for (const int* c = d.dual.mesh.cornersBegin(v); c != d.dual.mesh.cornersEnd(v); ++c)
-              flags[d.dual.mesh.vertex(TriMesh::next(*c))] = 1;
-        }
+    flagCrossingCorners(d.dual.mesh, pairs, round < kWatchRounds, round < kWatchRounds ? guard.watched : guard.pinned);
     d.dual = unrelaxed;
   }
   d = std::move(*best);
@@ -484,16 +490,7 @@ void relaxCollapsed(const TriMesh& surface, const std::vector<char>& flipped, co
       r.relaxation.flips += done->flips;
       return;
     }
-    std::vector<char>& flags = round < kWatchRounds ? guard.watched : guard.pinned;
-    flags.resize(r.mesh.vertexCount(), 0);
-    for (const auto& [f, g] : pairs)
-      for (int face : {f, g})
-        for (int v : relaxed.triangles[face]) {
-          flags[v] = 1;
-          if (round < kWatchRounds)
-            for (const int* c = r.mesh.cornersBegin(v); c != r.mesh.cornersEnd(v); ++c)
-              for (int x : r.mesh.triangles[*c / 3]) flags[x] = 1;
-        }
+    flagCrossingCorners(relaxed, pairs, round < kWatchRounds, round < kWatchRounds ? guard.watched : guard.pinned);
   }
 }
 

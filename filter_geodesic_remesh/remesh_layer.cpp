@@ -91,14 +91,20 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
   const RelaxationResult& relaxed = r.relaxation;
   if (relaxed.iterations > 0)
     ctx.log("Relaxation on the input surface: " + count(relaxed.iterations) + " rounds, " + count(relaxed.moves) +
-            " vertex moves, " + count(relaxed.flips) + " flips; " + count(relaxed.fixedVertices) +
-            " vertices kept in place (boundary, creases and corners)" +
+            " vertex moves, " + count(relaxed.flips) + " flips; " + count(relaxed.slidingVertices) +
+            " vertices moved only along the input's boundaries and creases, " + count(relaxed.fixedVertices) +
+            " kept in place (their corners)" +
             (relaxed.pinnedVertices > 0
                  ? " and " + count(relaxed.pinnedVertices) + " where moving them made faces cross"
                  : std::string()) +
             (relaxed.refusedCrossing > 0
                  ? "; " + count(relaxed.refusedCrossing) + " moves refused where faces would have crossed"
                  : std::string()));
+  if (r.angleRescueTried)
+    ctx.log("The smallest angle was " + formatNumber(r.firstSmallestAngle, "%.1f") + " deg (under " +
+            formatNumber(SurfaceRemeshParams::kRescueAngleDegrees, "%g") + "), so the remeshing was redone with " +
+            std::to_string(SurfaceRemeshParams::kRescueCentroidalIterations) + " geodesic Lloyd iterations: " +
+            (r.angleRescued ? std::string("that output, better, kept") : std::string("not better, the first kept")));
   const Topology& topology = r.mesh.topology;
   ctx.log("Topology kept: " + count(topology.components) + " components, genus " + count(topology.genus) + ", " +
           count(topology.boundaryLoops) + " boundary loops; " +

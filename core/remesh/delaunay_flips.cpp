@@ -34,7 +34,9 @@ double angleAt(const Vec3& p, const Vec3& q, const Vec3& r) {
   return std::atan2(u.cross(w).norm(), u.dot(w));
 }
 
-constexpr double kCapAngle = 179.0 * kPi / 180.0;
+/// A face with an angle over this is a cap: its normal says little (which side of the line through
+/// the other two corners rounding, a crease or a fold put the third), so it does not block a flip.
+constexpr double kCapAngle = 170.0 * kPi / 180.0;
 
 /// Unit normal of (p, q, r), or zero when the triangle is too flat for its normal to mean
 /// anything: twice its area under 1e-4 times its squared longest edge (its largest angle within

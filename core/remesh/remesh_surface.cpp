@@ -128,8 +128,7 @@ Status relaxDual(const FrontSurface& front, const TriMesh& surface, const Surfac
     if (Status s = originsOnSurface(front.geodesic, triangulation.origin); !s) return s;
   const TriMesh& relaxOn = front.geodesic.refined ? surface : front.fine->mesh;
   Expected<RelaxationResult> relaxed =
-      relaxOnSurface(triangulation.mesh, triangulation.origin, relaxOn,
-                     params.centroidalIterations > 0 ? params.relaxation.regularised() : params.relaxation, guard);
+      relaxOnSurface(triangulation.mesh, triangulation.origin, relaxOn, params.relaxation, guard);
   if (!relaxed) return relaxed.status();
   result = *relaxed;
   times.relaxation += lap(clock);
@@ -552,17 +551,14 @@ void collapseToAskedAndCount(const TriMesh& input, const TriMesh& surface, const
     r.fewestCount = r.fewestCount > 0 ? std::min(r.fewestCount, r.mesh.vertexCount()) : r.mesh.vertexCount();
 }
 
-}  // namespace
-
-Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& metric,
-                                            const SurfaceRemeshParams& params, Progress progress) {
-  if (Status s = checkRemeshInput(input, params); !s) return s;
+/// remeshSurface without the angle rescue and the measures.
+Expected<SurfaceRemeshResult> remeshOnce(const TriMesh& input, const Metric& metric, const SurfaceRemeshParams& params,
+                                         double remeshShare, Progress progress) {
   auto clock = std::chrono::steady_clock::now();
   SurfaceRemeshResult r;
   Expected<OrientedSurface> oriented = orientedSurface(input);
   if (!oriented) return oriented.status();
   const TriMesh& surface = oriented->copy ? *oriented->copy : input;
-  const double remeshShare = params.measure ? 0.9 : 1.0;
   Expected<FrontSurface> front = frontSurface(surface, metric, params, progress.sub(0.0, 0.1 * remeshShare));
   if (!front) return front.status();
   r.times.prepare = lap(clock);
@@ -600,9 +596,61 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   lap(clock);
   collapseToAskedAndCount(input, surface, oriented->flipped, metric, params, searchParams.triangulation.mayCross, r);
   r.times.triangulation += lap(clock);
+  return r;
+}
+
+void addTimes(RemeshStageTimes& to, const RemeshStageTimes& from) {
+  to.prepare += from.prepare;
+  to.engine += from.engine;
+  to.sampling += from.sampling;
+  to.triangulation += from.triangulation;
+  to.relaxation += from.relaxation;
+}
+
+/// The angle rescue (SurfaceRemeshParams::kRescueAngleDegrees): `r` is replaced by the centroidal
+/// output if that one is better. Fails only when cancelled.
+Status rescueAngles(const TriMesh& input, const Metric& metric, const SurfaceRemeshParams& params, double remeshShare,
+                    Progress progress, SurfaceRemeshResult& r) {
+  if (params.relaxation.iterations <= 0 || params.centroidalIterations > 0 || r.looksLikeTriangleSoup) return {};
+  const double first = angleStatistics(r.mesh).minDegrees;
+  if (!(first < SurfaceRemeshParams::kRescueAngleDegrees)) return {};
+  SurfaceRemeshParams again = params;
+  again.centroidalIterations = SurfaceRemeshParams::kRescueCentroidalIterations;
+  Expected<SurfaceRemeshResult> second = remeshOnce(input, metric, again, remeshShare, progress);
+  if (!second) return second.status().code == StatusCode::Cancelled ? second.status() : Status::ok();
+  // No farther from the count asked for than the first output (give or take 1%).
+  const auto miss = [&](const SurfaceRemeshResult& x) { return std::abs(x.mesh.vertexCount() - x.countAsked); };
+  const bool better = angleStatistics(second->mesh).minDegrees > first && second->crossingPairs <= r.crossingPairs &&
+                      miss(*second) <= miss(r) + 0.01 * r.countAsked;
+  if (better) {
+    addTimes(second->times, r.times);
+    r = std::move(*second);
+  } else {
+    addTimes(r.times, second->times);
+  }
+  r.angleRescueTried = true;
+  r.angleRescued = better;
+  r.firstSmallestAngle = first;
+  return {};
+}
+
+}  // namespace
+
+Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& metric,
+                                            const SurfaceRemeshParams& params, Progress progress) {
+  if (Status s = checkRemeshInput(input, params); !s) return s;
+  // Centroidal iterations asked for: the relaxation aims at regular triangles too. (The rescues'
+  // centroidal iterations keep the relaxation that raises the smallest angle.)
+  SurfaceRemeshParams p = params;
+  if (p.centroidalIterations > 0) p.relaxation = p.relaxation.regularised();
+  const double remeshShare = params.measure ? 0.9 : 1.0;
+  Expected<SurfaceRemeshResult> r = remeshOnce(input, metric, p, remeshShare, progress);
+  if (!r) return r.status();
+  if (Status s = rescueAngles(input, metric, p, remeshShare, progress, *r); !s) return s;
+  auto clock = std::chrono::steady_clock::now();
   if (params.measure)
-    if (Status s = measureOutput(input, r, progress.sub(remeshShare, 1.0)); !s) return s;
-  r.times.measure = lap(clock);
+    if (Status s = measureOutput(input, *r, progress.sub(remeshShare, 1.0)); !s) return s;
+  r->times.measure = lap(clock);
   return r;
 }
 

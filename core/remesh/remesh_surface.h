@@ -64,6 +64,13 @@ struct SurfaceRemeshParams {
   /// is redone at the same count with this many geodesic Lloyd iterations.
   static constexpr double kRescueShare = 0.1;
   static constexpr int kRescueCentroidalIterations = 3;
+  /// The angle rescue (remeshSurface): a relaxed output without centroidal iterations whose
+  /// smallest angle is under this (degrees) is remeshed again with kRescueCentroidalIterations,
+  /// and the second output kept if its smallest angle is larger (no more crossing pairs, no
+  /// farther from the count asked for, give or take 1%). Vertices on corners of the input's creases and boundaries do not
+  /// move in the relaxation, but samples moved to their cells' centres before the triangulation
+  /// leave better room around them (knot2 at 10%: 16.9 -> 30.5 degrees).
+  static constexpr double kRescueAngleDegrees = 20.0;
 
   /// The default target count for an input of `vertexCount` vertices (10%, at least 4).
   static int defaultTargetCount(int vertexCount);
@@ -134,6 +141,11 @@ struct SurfaceRemeshResult {
   /// after it were centroidal (samples moved instead of added).
   int countAsked = 0;
   bool centroidalRescue = false;
+  /// The angle rescue (kRescueAngleDegrees): tried when the first output's smallest angle,
+  /// firstSmallestAngle (degrees), was under it; angleRescued when the second output was kept.
+  bool angleRescueTried = false;
+  bool angleRescued = false;
+  double firstSmallestAngle = 0.0;
   int samplingRounds = 0;
   int sampledAsked = 0;
   int fewestCount = 0;

@@ -75,12 +75,47 @@ class SurfaceWalker {
     return known;
   }
 
-  /// Whether input vertex v has a blocked edge (a crease, corner or boundary vertex).
-  bool sharpVertex(int v) const {
-    for (const int* c = mesh_.cornersBegin(v); c != mesh_.cornersEnd(v); ++c)
-      if (blocked(TriMesh::next(*c)) || blocked(TriMesh::prev(*c))) return true;
-    return false;
+  /// The input vertices joined to v by blocked edges, at most three of them (three means three or
+  /// more: a corner of the feature curves); returns how many.
+  int blockedNeighbours(int v, std::array<int, 3>& out) const {
+    int n = 0;
+    const auto add = [&](int u) {
+      if (std::find(out.begin(), out.begin() + n, u) == out.begin() + n && n < 3) out[n++] = u;
+    };
+    for (const int* c = mesh_.cornersBegin(v); c != mesh_.cornersEnd(v); ++c) {
+      if (blocked(TriMesh::prev(*c))) add(mesh_.vertex(TriMesh::next(*c)));  // edge (v, next)
+      if (blocked(TriMesh::next(*c))) add(mesh_.vertex(TriMesh::prev(*c)));  // edge (v, prev)
+    }
+    return n;
   }
+
+  /// The vertex after v on the feature curve that comes to v from `from` (a blocked neighbour of
+  /// v), or -1 if v is a corner of the curves: not exactly two blocked edges, or a turn between
+  /// them sharper than the feature angle (the corner of a square plate).
+  int curveNext(int v, int from) const {
+    std::array<int, 3> next{};
+    if (blockedNeighbours(v, next) != 2) return -1;
+    const int to = next[0] == from ? next[1] : next[0];
+    const Vec3 in = mesh_.positions[v] - mesh_.positions[from], out = mesh_.positions[to] - mesh_.positions[v];
+    if (!(in.dot(out) > cosFeature_ * in.norm() * out.norm())) return -1;
+    return to;
+  }
+
+  /// The point at parameter t on the input edge from a to b (an edge of the mesh).
+  SurfacePoint onInputEdge(int a, int b, double t) const {
+    for (const int* c = mesh_.cornersBegin(a); c != mesh_.cornersEnd(a); ++c)
+      for (const int other : {TriMesh::next(*c), TriMesh::prev(*c)})
+        if (mesh_.vertex(other) == b) {
+          Vec3 bary = Vec3::Zero();
+          bary[*c % 3] = 1 - t;
+          bary[other % 3] = t;
+          return SurfacePoint::inFace(TriMesh::face(*c), bary);
+        }
+    return SurfacePoint::atVertex(a);  // not reached: a and b share an edge
+  }
+
+  const Vec3& position(int v) const { return mesh_.positions[v]; }
+  const TriMesh& mesh() const { return mesh_; }
 
   /// A face that contains the point (for a vertex: its first face).
   int faceOf(const SurfacePoint& p) const {
@@ -199,34 +234,94 @@ Status checkRelaxationInput(const TriMesh& output, const std::vector<SurfacePoin
   return Status::ok();
 }
 
-/// Per output vertex, 1 if it does not move: on a boundary edge, on an input vertex with a
-/// blocked edge (a crease, corner or boundary of the input), or in no face.
-std::vector<char> fixedVertices(const TriMesh& output, const std::vector<SurfacePoint>& points,
-                                const SurfaceWalker& walker) {
-  const int n = output.vertexCount();
-  std::vector<char> fixed(n, 0);
-  for (int c = 0; c < 3 * output.faceCount(); ++c)
-    if (output.oppositeCorner[c] < 0) {  // a boundary edge: both its vertices stay
-      fixed[output.vertex(TriMesh::next(c))] = 1;
-      fixed[output.vertex(TriMesh::prev(c))] = 1;
+/// A point on a feature curve of the input (a chain of blocked edges: boundaries and creases), at
+/// t along the input edge from a to b.
+struct CurvePoint {
+  int a = -1, b = -1;
+  double t = 0;
+};
+
+/// Where an output vertex may go: anywhere on its side of the creases, along a feature curve, or
+/// nowhere (a corner of the curves: three or more blocked edges, the end of one, or a sharp turn).
+enum class Freedom { Surface, Curve, None };
+
+/// The freedom of a point of the input and, for Curve, where it is on its curve.
+Freedom freedomOf(const SurfacePoint& p, const SurfaceWalker& walker, CurvePoint& at) {
+  int v = p.vertex;
+  if (v < 0) {
+    const Tri& t = walker.mesh().triangles[p.face];
+    const int zeros = (p.bary[0] == 0) + (p.bary[1] == 0) + (p.bary[2] == 0);
+    if (zeros == 0) return Freedom::Surface;
+    if (zeros == 2) {  // at a corner of the face
+      v = t[p.bary[0] != 0 ? 0 : p.bary[1] != 0 ? 1 : 2];
+    } else {  // on the edge facing the zero coordinate
+      const int k = p.bary[0] == 0 ? 0 : p.bary[1] == 0 ? 1 : 2;
+      if (!walker.blocked(3 * p.face + k)) return Freedom::Surface;
+      at = {t[(k + 1) % 3], t[(k + 2) % 3], p.bary[(k + 2) % 3]};
+      return Freedom::Curve;
     }
-  for (int i = 0; i < n; ++i) {
-    if (points[i].vertex >= 0 && walker.sharpVertex(points[i].vertex)) fixed[i] = 1;
-    if (output.valence(i) == 0) fixed[i] = 1;
   }
-  return fixed;
+  std::array<int, 3> next{};
+  const int n = walker.blockedNeighbours(v, next);
+  if (n == 0) return Freedom::Surface;
+  if (walker.curveNext(v, next[0]) < 0) return Freedom::None;
+  at = {v, next[1], 0.0};
+  return Freedom::Curve;
+}
+
+/// The point at arc length s along the curve from `at` (toward b if s > 0, toward a if s < 0); it
+/// stops at a corner of the curves (curveNext).
+CurvePoint slide(CurvePoint at, double s, const SurfaceWalker& walker) {
+  if (s < 0) {
+    at = {at.b, at.a, 1 - at.t};
+    s = -s;
+  }
+  for (int edges = 0; edges < 1000; ++edges) {
+    const double length = (walker.position(at.b) - walker.position(at.a)).norm();
+    const double left = (1 - at.t) * length;
+    if (s < left) {
+      at.t += s / length;
+      return at;
+    }
+    s -= left;
+    const int next = walker.curveNext(at.b, at.a);
+    if (next < 0) return {at.a, at.b, 1.0};
+    at = {at.b, next, 0.0};
+  }
+  return at;
+}
+
+/// Per output vertex, its freedom: None on an output boundary vertex that is not on an input
+/// feature curve (it cannot be moved along the boundary), at a corner of the curves, in no face.
+std::vector<Freedom> freedoms(const TriMesh& output, const std::vector<SurfacePoint>& points,
+                              const SurfaceWalker& walker) {
+  const int n = output.vertexCount();
+  std::vector<char> onBoundary(n, 0);
+  for (int c = 0; c < 3 * output.faceCount(); ++c)
+    if (output.oppositeCorner[c] < 0) {
+      onBoundary[output.vertex(TriMesh::next(c))] = 1;
+      onBoundary[output.vertex(TriMesh::prev(c))] = 1;
+    }
+  std::vector<Freedom> freedom(n, Freedom::None);
+  for (int i = 0; i < n; ++i) {
+    CurvePoint at;
+    const Freedom f = freedomOf(points[i], walker, at);
+    if (output.valence(i) > 0 && !(onBoundary[i] && f != Freedom::Curve)) freedom[i] = f;
+  }
+  return freedom;
 }
 
 /// Moves the free vertices of the output, one at a time, on the input surface.
 class Relaxer {
  public:
   Relaxer(TriMesh& output, std::vector<SurfacePoint>& points, const SurfaceWalker& walker, double maxDeviation,
-          const std::vector<char>& watched)
+          double aim, const std::vector<char>& watched)
       : output_(output),
         pos_(output.positions),
         points_(points),
         walker_(walker),
         maxDeviation_(maxDeviation),
+        aim_(aim),
         watched_(watched) {}
 
   /// The faces with a watched corner, which a watched vertex's faces may not cross (collected
@@ -240,8 +335,8 @@ class Relaxer {
     }
   }
 
-  /// Moves v toward the mean of its neighbours in its tangent plane, if that improves its ring;
-  /// where a small angle remains, tries steps in eight tangent directions.
+  /// Moves v toward the mean of its neighbours in its tangent plane, if that does not lower the
+  /// smallest angle of its ring; then tries steps in eight tangent directions that raise it.
   void relaxVertex(int v) {
     const Vec3 p = pos_[v];
     Vec3 centre = Vec3::Zero(), ringNormal = Vec3::Zero();
@@ -264,19 +359,78 @@ class Relaxer {
     Vec3 move = centre - p;
     move -= normal * normal.dot(move);
     const double before = ring(v, p, nullptr);
-    double smallest = tryMove(v, p + move, face, before, 0.0, maxAway);
+    double smallest = tryMove(v, p + move, face, before, maxAway);
     // A watched vertex whose move would make faces cross tries half and a quarter of it.
     for (double part = 0.5; refusedLast_ && part >= 0.25; part *= 0.5)
-      smallest = tryMove(v, p + part * move, face, before, 0.0, maxAway);
-    if (smallest >= kGoal) return;
-    tryTangentSteps(v, normal, ringLength, smallest);
+      smallest = tryMove(v, p + part * move, face, before, maxAway);
+    if (smallest >= aim_) return;
+    // Under 30 degrees a bad triangle costs more than the error: no deviation limit then.
+    const double stepAway =
+        smallest >= kSmallAngle ? kStepDeviation * maxAway : std::numeric_limits<double>::infinity();
+    tryTangentSteps(v, normal, ringLength, smallest, stepAway);
+  }
+
+  /// A vertex on a feature curve of the input: the step along the curve, both ways, that most
+  /// raises the smallest angle of its ring (while it is under the aim).
+  void relaxAlongCurve(int v) {
+    CurvePoint at;
+    if (freedomOf(points_[v], walker_, at) != Freedom::Curve) return;
+    const double before = ring(v, pos_[v], nullptr);
+    if (before >= aim_) return;
+    double ringLength = 0;
+    for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c)
+      ringLength += (pos_[output_.vertex(TriMesh::next(*c))] - pos_[v]).norm();
+    ringLength /= output_.valence(v);
+    std::vector<std::pair<double, SurfacePoint>> better;  // (smallest angle there, point), best first
+    for (const double step : {0.4, 0.2, 0.1, 0.05})
+      for (const double sign : {-1.0, 1.0}) {
+        const CurvePoint to = slide(at, sign * step * ringLength, walker_);
+        const SurfacePoint q = walker_.onInputEdge(to.a, to.b, to.t);
+        const double s = ring(v, walker_.pointOf(q.face, q.bary), nullptr);
+        if (s > before) better.push_back({s, q});
+      }
+    std::stable_sort(better.begin(), better.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+    const int movesBefore = moves_;
+    const double maxAway = maxDeviation_ * ringLength;
+    for (const auto& [s, q] : better) {
+      if (!keepsCurve(v, at, walker_.pointOf(q.face, q.bary), ringLength, maxAway)) continue;
+      tryMoveTo(v, q, before, maxAway);
+      if (moves_ > movesBefore) break;
+    }
   }
 
   int moves() const { return moves_; }
   int refusedCrossing() const { return refusedCrossing_; }
+  static constexpr double kSmallAngle = 30.0 * kDegree;  ///< under it, tangent steps have no deviation limit
 
  private:
-  static constexpr double kGoal = 30.0 * kDegree;  ///< smallest angle a move need not exceed
+  static constexpr double kStepDeviation = 2.0;  ///< tangent steps' deviation limit, in maxDeviation
+
+  /// Distance from x to the faces around v with v at position p.
+  double fanDistance(int v, const Vec3& p, const Vec3& x) const {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c) {
+      const Vec3& a = pos_[output_.vertex(TriMesh::next(*c))];
+      const Vec3& b = pos_[output_.vertex(TriMesh::prev(*c))];
+      const Vec3 w = closestBary(x, p, a, b);
+      nearest = std::min(nearest, (x - (w[0] * p + w[1] * a + w[2] * b)).squaredNorm());
+    }
+    return std::sqrt(nearest);
+  }
+
+  /// Whether moving v (at `from` on a feature curve) to q keeps the curve near v's faces: no point
+  /// of the curve within 1.5 ring lengths of `from` ends farther from them than it was, or than
+  /// maxAway. (Along a curved boundary, a longer chord strays farther from its arc.)
+  bool keepsCurve(int v, const CurvePoint& from, const Vec3& q, double ringLength, double maxAway) const {
+    const Vec3 p = pos_[v];
+    for (int k = -kCurveSamples; k <= kCurveSamples; ++k) {
+      const CurvePoint at = slide(from, k * 1.5 * ringLength / kCurveSamples, walker_);
+      const Vec3 x = (1 - at.t) * walker_.position(at.a) + at.t * walker_.position(at.b);
+      if (fanDistance(v, q, x) > std::max(fanDistance(v, p, x), maxAway)) return false;
+    }
+    return true;
+  }
+  static constexpr int kCurveSamples = 12;  ///< curve points checked each way (keepsCurve)
 
   /// Smallest angle (radians) of the faces around v with v at position p, and their normals.
   double ring(int v, const Vec3& p, std::vector<Vec3>* normals) const {
@@ -291,12 +445,16 @@ class Relaxer {
   }
 
   /// Moves v to the input point closest to `target` if no face around v turns over (except to
-  /// face the way the input does there), the ring's smallest angle stays at least
-  /// max(min(before, goal), floor) and the point v leaves stays within maxAway of the new fan.
+  /// face the way the input does there), the ring's smallest angle does not fall below
+  /// min(smallestBefore, aim) and the point v leaves stays within maxAway of the new fan.
   /// Returns the ring's smallest angle after (smallestBefore if v stays).
-  double tryMove(int v, const Vec3& target, int face, double smallestBefore, double floor, double maxAway) {
+  double tryMove(int v, const Vec3& target, int face, double smallestBefore, double maxAway) {
+    return tryMoveTo(v, walker_.project(target, face), smallestBefore, maxAway);
+  }
+
+  /// tryMove to a given point of the input.
+  double tryMoveTo(int v, const SurfacePoint& moved, double smallestBefore, double maxAway) {
     refusedLast_ = false;
-    const SurfacePoint moved = walker_.project(target, face);
     const Vec3 q = walker_.pointOf(moved.face, moved.bary);
     const Vec3 normalThere = walker_.normal(moved.face);
     before_.clear();
@@ -306,7 +464,7 @@ class Relaxer {
     // A face may not turn over, unless it then faces the way the input does (an unfolding).
     for (size_t k = 0; k < after_.size(); ++k)
       if (!(after_[k].dot(before_[k]) > 0) && !(after_[k].dot(normalThere) > 0)) return smallestBefore;
-    if (smallest < std::max(std::min(smallestBefore, kGoal), floor)) return smallestBefore;
+    if (smallest < std::min(smallestBefore, aim_)) return smallestBefore;
     // The point it leaves must stay close to the new fan: a vertex on a tip or a ridge keeps it.
     const Vec3& p = pos_[v];
     double away = std::numeric_limits<double>::infinity();
@@ -353,10 +511,10 @@ class Relaxer {
     return false;
   }
 
-  /// Still a small angle at v (at a tip, a saddle, next to a fixed vertex): the mean of the ring
-  /// is not better, so try steps in eight tangent directions from where the vertex is now and
-  /// keep the best. No deviation limit: a bad triangle costs more than the error.
-  void tryTangentSteps(int v, const Vec3& normal, double ringLength, double smallest) {
+  /// Steps in eight tangent directions from where v is now, at three lengths: the one that most
+  /// raises the smallest angle of its ring is kept (the mean of the ring is not always better: at
+  /// a tip, a saddle, next to a fixed vertex), if the point v leaves stays within maxAway.
+  void tryTangentSteps(int v, const Vec3& normal, double ringLength, double smallest, double maxAway) {
     const Vec3 here = pos_[v];
     const int hereFace = walker_.faceOf(points_[v]);
     const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
@@ -371,7 +529,7 @@ class Relaxer {
     std::stable_sort(better.begin(), better.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     // The best; for a watched vertex, the next best while a move is refused for crossing faces.
     for (const auto& [s, target] : better) {
-      tryMove(v, target, hereFace, smallest, smallest, std::numeric_limits<double>::infinity());
+      tryMove(v, target, hereFace, smallest, maxAway);
       if (!refusedLast_) break;
     }
   }
@@ -381,6 +539,7 @@ class Relaxer {
   std::vector<SurfacePoint>& points_;
   const SurfaceWalker& walker_;
   double maxDeviation_;
+  double aim_;                        ///< moves keep the ring's smallest angle at min(before, aim); none past it
   const std::vector<char>& watched_;  ///< per output vertex, or empty (RelaxationGuard::watched)
   std::vector<int> watchedFaces_;     ///< faces with a watched corner (collectWatchedFaces)
   std::vector<Vec3> before_, after_;  ///< normals of v's faces before and after a move
@@ -401,18 +560,29 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
   if (params.iterations <= 0) return r;
 
   const SurfaceWalker walker(input, params.featureAngleDegrees);
-  std::vector<char> fixed = fixedVertices(output, points, walker);
-  for (const char f : fixed) r.fixedVertices += f;
+  const std::vector<Freedom> freedom = freedoms(output, points, walker);
+  std::vector<char> fixed(freedom.size(), 0);
+  for (size_t v = 0; v < freedom.size(); ++v) {
+    fixed[v] = freedom[v] == Freedom::None || (freedom[v] == Freedom::Curve && !params.slideAlongFeatures);
+    r.fixedVertices += fixed[v];
+    r.slidingVertices += !fixed[v] && freedom[v] == Freedom::Curve;
+  }
   for (size_t v = 0; v < guard.pinned.size(); ++v) {
     r.pinnedVertices += guard.pinned[v] && !fixed[v];
     fixed[v] |= guard.pinned[v];
   }
   for (size_t v = 0; v < guard.watched.size(); ++v) r.watchedVertices += guard.watched[v] && !fixed[v];
-  Relaxer relaxer(output, points, walker, params.maxDeviation, guard.watched);
+  const double aim = params.raiseSmallestAngle ? kPi : Relaxer::kSmallAngle;
+  Relaxer relaxer(output, points, walker, params.maxDeviation, aim, guard.watched);
   for (int it = 0; it < params.iterations; ++it) {
     relaxer.collectWatchedFaces();
     for (int v = 0; v < output.vertexCount(); ++v)
-      if (!fixed[v]) relaxer.relaxVertex(v);
+      if (fixed[v])
+        continue;
+      else if (freedom[v] == Freedom::Curve)
+        relaxer.relaxAlongCurve(v);
+      else
+        relaxer.relaxVertex(v);
     // The output is manifold, oriented and has faces (checked above), and moves keep that.
     Expected<DelaunayFlipResult> flipped = flipToDelaunay(output, params.flips);
     if (!flipped) return flipped.status();

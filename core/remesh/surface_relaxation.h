@@ -13,12 +13,19 @@
 //   -----p-----  output vertex     to q decreases; the walk never crosses a sharp input edge
 //
 // A move is kept only if no incident face turns over (unless it then faces the way the input
-// does: an unfolding), the smallest angle of the incident faces does not fall below min(its
-// previous value, 30 degrees) ("smart" Laplacian), and the point the vertex leaves stays within
-// maxDeviation of the new faces (tips and ridges, where farthest-point samples sit, are kept).
-// Where a small angle remains, steps in eight tangent directions are tried and the best is kept.
-// Output vertices on the boundary, and those on an input vertex that has a sharp edge (a crease
-// or corner of the input), do not move.
+// does: an unfolding), the smallest angle of the incident faces does not fall ("smart"
+// Laplacian; in the centroidal mode, not below 30 degrees), and the point the vertex leaves stays
+// within maxDeviation of the new faces (tips and ridges, where farthest-point samples sit, are
+// kept). Then steps in eight tangent directions are tried and the one that most raises the
+// smallest angle is kept, within twice that deviation, or with no limit while an angle under 30
+// degrees remains (raiseSmallestAngle).
+// The input's feature curves (chains of boundary edges and of creases sharper than the feature
+// angle, through vertices with exactly two such edges) hold the vertices on them: such a vertex
+// moves only along its curve, by the step (up to 0.4 of its edges' length, both ways) that most
+// raises the smallest angle, while no point of the curve near it ends farther from its faces
+// than maxDeviation (or than before). Vertices where three or more feature edges meet, one ends,
+// or the curve turns by more than the feature angle do not move; nor do output boundary vertices
+// the input's boundary does not hold.
 // Connectivity changes only by the flips: vertices, components, genus and boundaries are kept, and
 // every vertex stays on the input surface (its SurfacePoint is updated).
 // Cost: O(iterations * F_out * (valence + walk length)); the input is read only where walks go.
@@ -35,7 +42,7 @@
 namespace gr {
 
 struct RelaxationParams {
-  int iterations = 3;  ///< rounds of (move every free vertex, then flip to Delaunay); 0 = off
+  int iterations = 5;  ///< rounds of (move every free vertex, then flip to Delaunay); 0 = off
   /// Input edges whose faces' normals differ by more than this (degrees) are creases: vertices on
   /// them stay, and walks do not cross them. 60 keeps the creases of CAD parts (fandisk) and lets
   /// the vertices of scans (armadillo: thousands of edges over 30 degrees) move.
@@ -44,6 +51,15 @@ struct RelaxationParams {
   /// length of its edges from the new faces around it: tips and ridges, where the farthest-point
   /// samples sit, are not smoothed away (the surface error stays that of the triangulation).
   double maxDeviation = 0.05;
+  /// Output vertices on a feature curve of the input (a chain of boundary or crease edges through
+  /// vertices with exactly two of them) move along it, to raise the smallest angle of their faces;
+  /// off, they stay where they are.
+  bool slideAlongFeatures = true;
+  /// On: a move never lowers the smallest angle around the vertex, and after the move toward the
+  /// ring's mean, tangent steps that raise it are tried (max-min angles: bunny00 and knot2 reach
+  /// CGAL's isotropic remeshing). Off: the mean may lower it as long as it stays at least 30
+  /// degrees, and steps are tried only under 30 degrees (evener angles, for the centroidal mode).
+  bool raiseSmallestAngle = true;
   DelaunayFlipParams flips;  ///< the flips after each round
   /// After the Delaunay flips of each round, flips toward valence 6 (flipTowardValenceSix): evener
   /// angles, no longer Delaunay everywhere. Off by default; the remeshes' centroidal relaxation
@@ -60,6 +76,7 @@ struct RelaxationParams {
   RelaxationParams regularised() const {
     RelaxationParams p = *this;
     p.valenceFlips = true;
+    p.raiseSmallestAngle = false;
     p.valence.featureAngleDegrees = flips.featureAngleDegrees;
     p.maxDeviation = std::max(maxDeviation, kRegularMaxDeviation);
     return p;
@@ -70,7 +87,8 @@ struct RelaxationParams {
 struct RelaxationResult {
   int iterations = 0;       ///< rounds done
   int moves = 0;            ///< vertex moves kept, over all rounds
-  int fixedVertices = 0;    ///< vertices that never move (boundary, input creases and corners)
+  int fixedVertices = 0;    ///< vertices that never move (corners of the input's feature curves)
+  int slidingVertices = 0;  ///< vertices that move along the input's feature curves
   int pinnedVertices = 0;   ///< of the others, those the caller pinned (RelaxationGuard)
   int watchedVertices = 0;  ///< and those it watched
   int refusedCrossing = 0;  ///< moves of watched vertices refused because faces would cross

@@ -1,0 +1,89 @@
+// Triangle quality of the uniform remeshing at its defaults against CGAL's isotropic remeshing
+// (issue 20, point 3), over the data set at 10%:
+// - on the meshes listed below, the smallest angle and the share of triangles with an angle under
+//   30 degrees at least as good as CGAL's with 10 iterations at the same count (CGAL runs here, on
+//   the same mesh). These are the meshes where the relaxation that raises the smallest angle,
+//   the vertices sliding along boundaries and creases, and the angle rescue (remesh_surface.h)
+//   brought ours from worse to as good; docs/BENCHMARKS.md lists the whole data set, the meshes
+//   where ours is still worse and why.
+// - no angle under 20 degrees on every closed mesh of the data set whose input has no angle
+//   under 1 degree.
+// Angles are recounted here from the positions (test::recountAngles), not taken from the result.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/mesh/vcg_mesh.h"
+#include "core/remesh/remesh_surface.h"
+#include "tests/oracles/remesh_oracles.h"
+#include "tests/support/test_support.h"
+
+namespace gr {
+namespace {
+
+Expected<SurfaceRemeshResult> remeshTenPercent(const TriMesh& input) {
+  SurfaceRemeshParams params;
+  params.sampling.targetCount = input.vertexCount() / 10;
+  params.measure = false;
+  return remeshSurface(input, params);
+}
+
+class RemeshAnglesAgainstCgal : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(RemeshAnglesAgainstCgal, SmallestAngleAndShareUnder30AtLeastAsGood) {
+  const TriMesh input = test::loadRealMesh(GetParam());
+  const Expected<SurfaceRemeshResult> ours = remeshTenPercent(input);
+  ASSERT_TRUE(ours) << ours.status().message;
+  test::expectValidWithTopologyOf(test::recount(ours->mesh.triangles, ours->mesh.vertexCount()),
+                                  test::recount(input.triangles, input.vertexCount()));
+
+  Expected<std::unique_ptr<oracle::SurfaceMesh>> cgal = oracle::toSurfaceMesh(input);
+  ASSERT_TRUE(cgal);
+  const oracle::CgalCalibration calibration =
+      oracle::calibrateCgalEdgeLength(**cgal, ours->mesh.vertexCount(), 10, 3, 0.02);
+  oracle::cgalIsotropicRemeshing(**cgal, calibration.edgeLength, 10);
+  const Expected<TriMesh> theirs = oracle::toTriMesh(**cgal);
+  ASSERT_TRUE(theirs);
+
+  const test::AngleRecount a = test::recountAngles(ours->mesh), c = test::recountAngles(*theirs);
+  std::printf("%s at 10%%: ours %d vertices, smallest %.2f deg, %.2f %% under 30 | CGAL %d, %.2f deg, %.2f %%%s\n",
+              GetParam().c_str(), ours->mesh.vertexCount(), a.smallestDegrees, 100 * a.shareBelow30,
+              theirs->vertexCount(), c.smallestDegrees, 100 * c.shareBelow30,
+              ours->angleRescued ? " (angle rescue)" : "");
+  EXPECT_GE(a.smallestDegrees, c.smallestDegrees);
+  EXPECT_LE(a.shareBelow30, c.shareBelow30);
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgal,
+                         ::testing::Values("bear.off", "bear_bis.off", "blobby.off", "cube-meshed.off", "dragknob.off",
+                                           "ellipe0.003.off", "ellipsoid.off", "fandisk.off", "fandisk_large.off",
+                                           "hand.off", "holes.off", "homer.off", "knot1.off", "knot2.off",
+                                           "larger_sphere.off", "mannequin-devil.off", "mesh_with_border.off",
+                                           "part.off", "sphere.ply", "three_peaks.off"),
+                         [](const ::testing::TestParamInfo<std::string>& p) { return test::testNameOfFile(p.param); });
+
+TEST(RemeshAngles, NoAngleUnder20DegreesOnClosedMeshesWithoutSlivers) {
+  int checked = 0;
+  for (const std::string& name : test::dataSetMeshFiles()) {
+    const Expected<TriMesh> input = loadTriMesh(test::meshPath(name));
+    if (!input || input->vertexCount() > 60000 || input->vertexCount() / 10 < 4) continue;
+    const test::Recount in = test::recount(input->triangles, input->vertexCount());
+    if (!(in.manifoldEdges && in.manifoldVertices && in.oriented) || in.boundaryLoops > 0) continue;
+    if (test::recountAngles(*input).smallestDegrees < 1.0) continue;
+    SCOPED_TRACE(name);
+    const Expected<SurfaceRemeshResult> r = remeshTenPercent(*input);
+    ASSERT_TRUE(r) << r.status().message;
+    const double smallest = test::recountAngles(r->mesh).smallestDegrees;
+    std::printf("%-26s %6d -> %5d vertices: smallest angle %.1f deg%s\n", name.c_str(), input->vertexCount(),
+                r->mesh.vertexCount(), smallest, r->angleRescued ? " (angle rescue)" : "");
+    EXPECT_GE(smallest, 20.0);
+    ++checked;
+  }
+  EXPECT_GE(checked, 30);  // the data set has 36 such meshes up to 60,000 vertices
+}
+
+}  // namespace
+}  // namespace gr

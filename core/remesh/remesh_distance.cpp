@@ -162,6 +162,10 @@ struct Shared {
   std::vector<int> dual;   ///< dualFaces
 };
 
+/// A centroid whose walk from its face's dual input face ends farther than this times the face's
+/// longest side is walked from the corners' origins too.
+constexpr double kFarForItsSize = 0.1;
+
 /// The output's vertices, against the input face holding their origin (they lie on it).
 void outputVertices(const TriMesh& input, const TriMesh& output, const Shared& s, Bounds& b) {
   for (int i = 0; i < output.vertexCount(); ++i)
@@ -178,13 +182,15 @@ void outputFaces(const TriMesh& input, const TriMesh& output, const Shared& s, i
     const Vec3 &p = output.positions[t[0]], &q = output.positions[t[1]], &r = output.positions[t[2]];
     const Vec3 centroid = (p + q + r) / 3.0;
     std::pair<double, int> nearest = {kInf, -1};
-    if (s.dual[f] >= 0) {
-      nearest = walkToNearest(centroid, input, s.inputFaces, s.dual[f]);
-    } else {  // the corners' origins may lie on different sides of a thin part: the nearest walk
+    if (s.dual[f] >= 0) nearest = walkToNearest(centroid, input, s.inputFaces, s.dual[f]);
+    // Far for the face's size: from the corners' origins too. They may lie on different sides of
+    // a thin part or of a crease the face cuts across, where the walk from the dual face ends at a
+    // local minimum.
+    const double size = std::max({(q - p).squaredNorm(), (r - q).squaredNorm(), (p - r).squaredNorm()});
+    if (nearest.first * nearest.first > kFarForItsSize * kFarForItsSize * size)
       for (int k = 0; k < 3; ++k)
-        if (s.start[t[k]] >= 0)
+        if (s.start[t[k]] >= 0 && s.start[t[k]] != nearest.second)
           nearest = std::min(nearest, walkToNearest(centroid, input, s.inputFaces, s.start[t[k]]));
-    }
     b.add(centroid, nearest.first);
     for (int k = 0; k < 3; ++k) {  // the side from corner k to k + 1, across from corner k + 2
       const int across = output.oppositeCorner[3 * f + (k + 2) % 3];

@@ -326,6 +326,16 @@ class Relaxer {
 
   /// The faces with a watched corner, which a watched vertex's faces may not cross (collected
   /// again each round: the flips change the faces).
+  /// Before each round: the step aim from the mesh's smallest angle, the watched faces.
+  void startRound() {
+    double smallest = kPi;
+    for (int f = 0; f < output_.faceCount(); ++f) {
+      const Tri& t = output_.triangles[f];
+      smallest = std::min(smallest, std::acos(smallestAngleCosine(pos_[t[0]], pos_[t[1]], pos_[t[2]])));
+    }
+    stepAim_ = std::max(kSmallAngle, smallest + kStepMargin);
+    collectWatchedFaces();
+  }
   void collectWatchedFaces() {
     watchedFaces_.clear();
     if (watched_.empty()) return;
@@ -363,7 +373,7 @@ class Relaxer {
     // A watched vertex whose move would make faces cross tries half and a quarter of it.
     for (double part = 0.5; refusedLast_ && part >= 0.25; part *= 0.5)
       smallest = tryMove(v, p + part * move, face, before, maxAway);
-    if (smallest >= aim_) return;
+    if (smallest >= std::min(aim_, stepAim_)) return;
     // Under 30 degrees a bad triangle costs more than the error: no deviation limit then.
     const double stepAway =
         smallest >= kSmallAngle ? kStepDeviation * maxAway : std::numeric_limits<double>::infinity();
@@ -371,12 +381,12 @@ class Relaxer {
   }
 
   /// A vertex on a feature curve of the input: the step along the curve, both ways, that most
-  /// raises the smallest angle of its ring (while it is under the aim).
+  /// raises the smallest angle of its ring (where tangent steps are tried: stepAim_).
   void relaxAlongCurve(int v) {
     CurvePoint at;
     if (freedomOf(points_[v], walker_, at) != Freedom::Curve) return;
     const double before = ring(v, pos_[v], nullptr);
-    if (before >= aim_) return;
+    if (before >= std::min(aim_, stepAim_)) return;
     double ringLength = 0;
     for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c)
       ringLength += (pos_[output_.vertex(TriMesh::next(*c))] - pos_[v]).norm();
@@ -404,6 +414,12 @@ class Relaxer {
   static constexpr double kSmallAngle = 30.0 * kDegree;  ///< under it, tangent steps have no deviation limit
 
  private:
+  /// Tangent steps are tried where the ring's smallest angle is under 30 degrees or within this
+  /// of the mesh's smallest: the smallest angle is raised where it is, at a fraction of the cost
+  /// of steps everywhere (bunny00 at 10%: 22 ms against 200 for the relaxation, for 34 deg
+  /// against 38 deg).
+  static constexpr double kStepMargin = 3.0 * kDegree;
+  double stepAim_ = kPi;                         ///< this round's: steps where the ring's smallest angle is under it
   static constexpr double kStepDeviation = 2.0;  ///< tangent steps' deviation limit, in maxDeviation
 
   /// Distance from x to the faces around v with v at position p.
@@ -575,7 +591,7 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
   const double aim = params.raiseSmallestAngle ? kPi : Relaxer::kSmallAngle;
   Relaxer relaxer(output, points, walker, params.maxDeviation, aim, guard.watched);
   for (int it = 0; it < params.iterations; ++it) {
-    relaxer.collectWatchedFaces();
+    relaxer.startRound();
     for (int v = 0; v < output.vertexCount(); ++v)
       if (fixed[v])
         continue;

@@ -90,16 +90,20 @@ void warnIfSoup(const TriMesh& input, const SurfaceRemeshResult& r, int refineme
 void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
   const RelaxationResult& relaxed = r.relaxation;
   if (relaxed.iterations > 0)
-    ctx.log("Relaxation on the input surface: " + count(relaxed.iterations) + " rounds, " + count(relaxed.moves) +
-            " vertex moves, " + count(relaxed.flips) + " flips; " + count(relaxed.slidingVertices) +
-            " vertices moved only along the input's boundaries and creases, " + count(relaxed.fixedVertices) +
-            " kept in place (their corners)" +
-            (relaxed.pinnedVertices > 0
-                 ? " and " + count(relaxed.pinnedVertices) + " where moving them made faces cross"
-                 : std::string()) +
-            (relaxed.refusedCrossing > 0
-                 ? "; " + count(relaxed.refusedCrossing) + " moves refused where faces would have crossed"
-                 : std::string()));
+    ctx.log(
+        "Relaxation on the input surface: " + count(relaxed.iterations) + " rounds, " + count(relaxed.moves) +
+        " vertex moves, " + count(relaxed.flips) + " flips" +
+        (relaxed.slidingVertices > 0
+             ? "; " + count(relaxed.slidingVertices) + " vertices moved only along the input's boundaries and creases"
+             : std::string()) +
+        (relaxed.fixedVertices > 0
+             ? "; " + count(relaxed.fixedVertices) + " kept in place (corners of boundaries and creases)"
+             : std::string()) +
+        (relaxed.pinnedVertices > 0 ? " and " + count(relaxed.pinnedVertices) + " where moving them made faces cross"
+                                    : std::string()) +
+        (relaxed.refusedCrossing > 0
+             ? "; " + count(relaxed.refusedCrossing) + " moves refused where faces would have crossed"
+             : std::string()));
   if (r.angleRescueTried)
     ctx.log("The smallest angle was " + formatNumber(r.firstSmallestAngle, "%.1f") + " deg (under " +
             formatNumber(SurfaceRemeshParams::kRescueAngleDegrees, "%g") + "), so the remeshing was redone with " +

@@ -21,10 +21,11 @@ void declareUniformRemesh(const MeshModel& mesh, RichParameterList& params) {
   params.addParam(RichInt(param::kRelaxation, defaults.relaxation.iterations, "Relaxation",
                           "Rounds of tangential relaxation after the triangulation (0 to " +
                               QString::number(SurfaceRemeshParams::kMaxRelaxationRounds) +
-                              "): each vertex moves toward the mean of its neighbours on the input surface (never "
-                              "across a crease, never smoothing away a tip), then edges are flipped back to "
-                              "Delaunay. Raises the smallest angles; 0 keeps the paper's triangulation as it is "
-                              "(default " +
+                              "): each vertex moves toward the mean of its neighbours on the input surface, or "
+                              "where an angle is small by the step that raises it (never across a crease, never "
+                              "smoothing away a tip; vertices on boundaries and creases slide along them), then "
+                              "edges are flipped back to Delaunay. Raises the smallest angles; 0 keeps the paper's "
+                              "triangulation as it is (default " +
                               QString::number(defaults.relaxation.iterations) + ")."));
   params.addParam(RichBool(param::kLabelInput, false, "Label input",
                            "Also write into the input mesh each vertex's Voronoi cell (the output vertex it belongs "

@@ -53,7 +53,7 @@ print(f"Run: {ctx.get('date', '?')} on {ctx.get('host_name', '?')}, {ctx.get('nu
       "wall time minus the start-up time (the same command without the script); quality: std of all angles, smallest angle, "
       "% of triangles with an angle under 30°, Hausdorff distance output → input (one-sided) and both ways "
       "(two-sided), and the RMS distance both ways, in % of the input's bounding-box diagonal; "
-      "ours: the filter's defaults (3 rounds of relaxation); ours, no relaxation: the paper's triangulation "
+      "ours: the filter's defaults (5 rounds of relaxation); ours, no relaxation: the paper's triangulation "
       "alone (Relaxation = 0); ours + sub-vertex: FpsParams::subVertexPlacement (the filter's SubVertexPlacement).")
 print()
 print("| mesh | target | method | vertices | faces | added | time | engine | sampling | triangulation | relaxation | other / ours "

@@ -201,6 +201,29 @@ void countNonManifoldEdges(const TriMesh& m, int nonManifoldCorners, Topology& t
     if (i == 0 || keys[i].first != keys[i - 1].first) ++t.nonManifoldEdges;
 }
 
+/// The number of v's corners reached from its first corner by crossing edges at v that have an
+/// opposite corner (whichever way the faces are oriented), both ways round: v's valence when it
+/// has one fan through manifold edges (every vertex of a clean mesh), fewer otherwise.
+int cornersOfFirstFan(const TriMesh& m, int v) {
+  const int first = *m.cornersBegin(v);
+  int reached = 1;
+  for (int dir = 0; dir < 2; ++dir) {
+    int leave = dir == 0 ? TriMesh::prev(first) : TriMesh::next(first);  // the corner facing the edge crossed next
+    for (int steps = 0; steps < m.valence(v); ++steps) {
+      const int o = m.oppositeCorner[leave];
+      if (o < 0) break;
+      const int f = TriMesh::face(o);
+      int at = -1;  // the corner of f at v
+      for (int k = 0; k < 3; ++k)
+        if (m.triangles[f][k] == v) at = 3 * f + k;
+      if (at < 0 || at == first) return at == first ? reached : -1;  // closed: all of the fan
+      ++reached;
+      leave = 3 * f + (3 - at % 3 - o % 3);  // the third corner of f faces v's other edge in f
+    }
+  }
+  return reached;
+}
+
 /// Isolated vertices, and non-manifold ones: a vertex with more than one fan of faces.
 void countNonManifoldVertices(const TriMesh& m, const std::vector<std::array<int, 2>>& others, Topology& t) {
   std::array<Topology, 2> halves;  // the two halves' counts, merged in vertex order
@@ -212,7 +235,7 @@ void countNonManifoldVertices(const TriMesh& m, const std::vector<std::array<int
         ++h.isolatedVertices;
         continue;
       }
-      if (countFans(m, others, v, scratch) > 1) {
+      if (cornersOfFirstFan(m, v) != m.valence(v) && countFans(m, others, v, scratch) > 1) {
         ++h.nonManifoldVertices;
         h.nonManifoldVertexList.push_back(v);
       }

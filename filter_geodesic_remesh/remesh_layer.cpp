@@ -66,6 +66,15 @@ void logCountSearch(const SurfaceRemeshResult& r, FilterContext& ctx) {
   ctx.log(line);
 }
 
+/// The remesh had more vertices than the input: the input's triangles were kept.
+void logInputKept(const TriMesh& input, const SurfaceRemeshResult& r, FilterContext& ctx) {
+  if (!r.inputKept) return;
+  ctx.warn("The remesh needed " + count(r.remeshedCount) + " vertices to keep this surface's topology (" +
+           count(input.topology.components) + " components, " + count(input.topology.boundaryLoops) +
+           " boundary loops), more than the input's " + count(input.vertexCount()) +
+           ": the new layer is the input's own triangles.");
+}
+
 /// The fronts ran on the intrinsic Delaunay refinement of the input (its triangles were poor).
 void logRefinedSurface(const SurfaceRemeshResult& r, FilterContext& ctx) {
   if (!r.refinedSurface) return;
@@ -196,6 +205,7 @@ void commitRemesh(MeshDocument& doc, const CurrentMesh& current, const SurfaceRe
   logOrientation(view.mesh, result, ctx);
   logCounts(view.mesh, result, commit, label, ctx);
   logCountSearch(result, ctx);
+  logInputKept(view.mesh, result, ctx);
   logRefinedSurface(result, ctx);
   warnIfSoup(view.mesh, result, commit.refinement, ctx);
   logQuality(result, ctx);

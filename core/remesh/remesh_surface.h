@@ -143,6 +143,10 @@ struct SurfaceRemeshResult {
   bool centroidalRescue = false;
   /// The angle rescue (kRescueAngleDegrees): tried when the first output's smallest angle,
   /// firstSmallestAngle (degrees), was under it; angleRescued when the second output was kept.
+  /// inputKept: the remesh had more vertices (remeshedCount) than the input, so the input's own
+  /// triangles (oriented) are the output, each vertex its own cell (remeshSurface).
+  bool inputKept = false;
+  int remeshedCount = 0;
   bool angleRescueTried = false;
   bool angleRescued = false;
   double firstSmallestAngle = 0.0;

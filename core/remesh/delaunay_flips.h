@@ -13,9 +13,10 @@
 //         \ /                    \|/        orientation, and (x, y) is not already an edge.
 //          y                      y
 //
-// Caps are flipped away too: a face whose angle facing the edge is within a degree of 180 (three
-// samples on one straight line of the input, off it only by rounding) has no meaningful normal,
-// so the crease test ignores it; the flip keeps the line as the path a - x - b.
+// Caps are flipped away too: a face whose angle facing the edge is over 170 degrees (three
+// samples on one straight line of the input, off it only by rounding; or an ear on a boundary
+// folded over its neighbour) has no normal that says anything about a crease, so the crease test
+// ignores it; the flip keeps the line as the path a - x - b, or unfolds the ear.
 // Flips never change the vertices, the number of faces, the components, genus or boundaries.
 // Edges to check are kept in a work list; each flip re-queues the quad's four outer edges.
 // Cost: O(F) plus O(valence) per flip (the new diagonal is looked up around its vertex); at most

@@ -402,8 +402,10 @@ class Relaxer {
     std::stable_sort(better.begin(), better.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
     const int movesBefore = moves_;
     const double maxAway = maxDeviation_ * ringLength;
+    std::vector<std::pair<Vec3, double>> curveNear;  // curveNearby, found for the first candidate
     for (const auto& [s, q] : better) {
-      if (!keepsCurve(v, at, walker_.pointOf(q.face, q.bary), ringLength, maxAway)) continue;
+      if (curveNear.empty()) curveNear = curveNearby(v, at, ringLength);
+      if (!keepsCurve(v, curveNear, walker_.pointOf(q.face, q.bary), maxAway)) continue;
       tryMoveTo(v, q, before, maxAway);
       if (moves_ > movesBefore) break;
     }
@@ -434,19 +436,27 @@ class Relaxer {
     return std::sqrt(nearest);
   }
 
-  /// Whether moving v (at `from` on a feature curve) to q keeps the curve near v's faces: no point
-  /// of the curve within 1.5 ring lengths of `from` ends farther from them than it was, or than
-  /// maxAway. (Along a curved boundary, a longer chord strays farther from its arc.)
-  bool keepsCurve(int v, const CurvePoint& from, const Vec3& q, double ringLength, double maxAway) const {
-    const Vec3 p = pos_[v];
+  /// Points of the feature curve within 1.5 ring lengths of `from` (v's place on it), each with
+  /// its distance to v's faces as they are.
+  std::vector<std::pair<Vec3, double>> curveNearby(int v, const CurvePoint& from, double ringLength) const {
+    std::vector<std::pair<Vec3, double>> near;
     for (int k = -kCurveSamples; k <= kCurveSamples; ++k) {
       const CurvePoint at = slide(from, k * 1.5 * ringLength / kCurveSamples, walker_);
       const Vec3 x = (1 - at.t) * walker_.position(at.a) + at.t * walker_.position(at.b);
-      if (fanDistance(v, q, x) > std::max(fanDistance(v, p, x), maxAway)) return false;
+      near.push_back({x, fanDistance(v, pos_[v], x)});
     }
+    return near;
+  }
+
+  /// Whether moving v to q keeps the curve near v's faces: no point of `near` (curveNearby) ends
+  /// farther from them than it was, or than maxAway. (Along a curved boundary, a longer chord
+  /// strays farther from its arc.)
+  bool keepsCurve(int v, const std::vector<std::pair<Vec3, double>>& near, const Vec3& q, double maxAway) const {
+    for (const auto& [x, now] : near)
+      if (fanDistance(v, q, x) > std::max(now, maxAway)) return false;
     return true;
   }
-  static constexpr int kCurveSamples = 12;  ///< curve points checked each way (keepsCurve)
+  static constexpr int kCurveSamples = 12;  ///< curve points checked each way (curveNearby)
 
   /// Smallest angle (radians) of the faces around v with v at position p, and their normals.
   double ring(int v, const Vec3& p, std::vector<Vec3>* normals) const {
@@ -482,16 +492,8 @@ class Relaxer {
       if (!(after_[k].dot(before_[k]) > 0) && !(after_[k].dot(normalThere) > 0)) return smallestBefore;
     if (smallest < std::min(smallestBefore, aim_)) return smallestBefore;
     // The point it leaves must stay close to the new fan: a vertex on a tip or a ridge keeps it.
-    const Vec3& p = pos_[v];
-    double away = std::numeric_limits<double>::infinity();
-    for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c) {
-      const Vec3& a = pos_[output_.vertex(TriMesh::next(*c))];
-      const Vec3& b = pos_[output_.vertex(TriMesh::prev(*c))];
-      const Vec3 w = closestBary(p, q, a, b);
-      away = std::min(away, (p - (w[0] * q + w[1] * a + w[2] * b)).squaredNorm());
-    }
-    if (away > maxAway * maxAway) return smallestBefore;
-    const Vec3 from = p;  // p refers to pos_[v]
+    if (fanDistance(v, q, pos_[v]) > maxAway) return smallestBefore;
+    const Vec3 from = pos_[v];
     pos_[v] = q;
     if (!watched_.empty() && watched_[v] && fanCrossesWatchedFaces(v)) {
       pos_[v] = from;

@@ -24,14 +24,19 @@
 //               field (linear scan, the same for every method), updated incrementally.
 //
 //   Ours_geodesicDistance     gr::geodesicDistance(), what the Fast marching filter calls: the
-//                             triangulation test, the intrinsic Delaunay refinement where it says
-//                             so, the engine on the refined surface, the values at the input's
-//                             vertices (counters: refined, inserted points)
+//                             triangulation test, then where it says the mesh is poor exact
+//                             window propagation within its budget, else the intrinsic Delaunay
+//                             refinement and the engine on it; the values at the input's vertices
+//                             (counters: exact, windows, refined, inserted points)
+//   Ours_geodesicDistance_fronts  the same without exact propagation (what the remeshing's fronts
+//                             run on), sliver meshes only
+//   Cgal_ShortestPath         CGAL's exact geodesics (Surface_mesh_shortest_path: mesh, source,
+//                             every vertex queried), sliver meshes only
 //
 // Meshes: fandisk, bunny00, armadillo (libcgal-demo data) and armadillo subdivided 1-to-4 three
 // times (1,664,002 vertices), built once per process on first use; a filter that excludes a mesh
-// never builds it. Sliver meshes (issue 17), with the single-source families of ours and vcglib
-// only: cheese.off and the four CAD-like meshes of tests/support/cad_meshes.h (cad_gear,
+// never builds it. Sliver meshes (issue 17), with the single-source families of ours, vcglib
+// and CGAL's exact geodesics only: cheese.off and the four CAD-like meshes of tests/support/cad_meshes.h (cad_gear,
 // cad_hole_plate, cad_cylinder, cad_bracket). Select families with --benchmark_filter, e.g. '^Ours', '/bunny00', '^FpsStep'.
 // Counters: vertices/s (reached vertices per second), reached, vertices, max_dist (sanity check
 // that every method computed a field; accuracy is tested in tests/, not here).
@@ -40,6 +45,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <memory>
@@ -229,13 +235,16 @@ void BM_OursOneShot(benchmark::State& state, const MeshSpec& spec) {
   setCounters(state, *bm, reached, maxDist);
 }
 
+template <gr::ExactPropagation kExact>
 void BM_OursGeodesicDistance(benchmark::State& state, const MeshSpec& spec) {
   BenchMesh* bm = getMesh(state, spec);
   if (!bm) return;
   const std::vector<int> sources{kSource};
-  double reached = 0, maxDist = 0, inserted = 0, refined = 0;
+  gr::GeodesicDistanceParams params;
+  params.exact = kExact;
+  double reached = 0, maxDist = 0, inserted = 0, refined = 0, exact = 0, windows = 0;
   for (auto _ : state) {
-    gr::Expected<gr::GeodesicDistanceResult> r = gr::geodesicDistance(bm->tri, {}, sources);
+    gr::Expected<gr::GeodesicDistanceResult> r = gr::geodesicDistance(bm->tri, {}, sources, params);
     if (!r) {
       state.SkipWithError(r.status().message.c_str());
       return;
@@ -245,10 +254,34 @@ void BM_OursGeodesicDistance(benchmark::State& state, const MeshSpec& spec) {
     maxDist = r->field.maxDistance;
     inserted = r->insertedPoints;
     refined = r->refined;
+    exact = r->exact;
+    windows = static_cast<double>(r->windows);
   }
   setCounters(state, *bm, reached, maxDist);
   state.counters["inserted"] = inserted;
   state.counters["refined"] = refined;
+  state.counters["exact"] = exact;
+  state.counters["windows"] = windows;
+}
+
+/// CGAL's exact geodesics (Surface_mesh_shortest_path, the tests' oracle): its mesh built, the
+/// source added, every vertex queried.
+void BM_CgalShortestPath(benchmark::State& state, const MeshSpec& spec) {
+  BenchMesh* bm = getMesh(state, spec);
+  if (!bm) return;
+  double reached = 0, maxDist = 0;
+  for (auto _ : state) {
+    const std::vector<double> d = gr::oracle::exactGeodesic(bm->tri, kSource);
+    benchmark::DoNotOptimize(d.data());
+    reached = 0;
+    maxDist = 0;
+    for (double x : d)
+      if (std::isfinite(x)) {
+        ++reached;
+        maxDist = std::max(maxDist, x);
+      }
+  }
+  setCounters(state, *bm, reached, maxDist);
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -568,7 +601,7 @@ void registerAll() {
     const int slow = isLarge(spec) ? 1 : 0;  // a single run on the 1M mesh
     add("Ours_FastMarcher", BM_OursFastMarcher, spec);
     add("Ours_fastMarching_oneshot", BM_OursOneShot, spec);
-    add("Ours_geodesicDistance", BM_OursGeodesicDistance, spec, slow);
+    add("Ours_geodesicDistance", BM_OursGeodesicDistance<gr::ExactPropagation::WhereCheaper>, spec, slow);
     add("Dijkstra", BM_Dijkstra, spec);
     add("Vcg_Geodesic", BM_VcgGeodesic, spec, slow);
     add("CgalHeat_BuildQuery", BM_CgalHeatBuildQuery<HeatVariant::Direct>, spec, slow);
@@ -593,8 +626,10 @@ void registerAll() {
   for (const MeshSpec& spec : kSliverMeshes) {
     add("Ours_FastMarcher", BM_OursFastMarcher, spec);
     add("Ours_fastMarching_oneshot", BM_OursOneShot, spec);
-    add("Ours_geodesicDistance", BM_OursGeodesicDistance, spec);
+    add("Ours_geodesicDistance", BM_OursGeodesicDistance<gr::ExactPropagation::WhereCheaper>, spec);
+    add("Ours_geodesicDistance_fronts", BM_OursGeodesicDistance<gr::ExactPropagation::Never>, spec);
     add("Vcg_Geodesic", BM_VcgGeodesic, spec);
+    add("Cgal_ShortestPath", BM_CgalShortestPath, spec);
   }
 }
 

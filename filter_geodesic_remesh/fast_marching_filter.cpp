@@ -27,14 +27,20 @@ Expected<std::vector<double>> speedFromParameters(const MeshModel& mm, const ada
 /// The refinement's log: one line on the triangulation fronts ran on, then what the refinement
 /// could not do (skipped, faces left below the angle bound, budget spent), as warnings.
 void logTriangulation(const GeodesicDistanceResult& r, const GeodesicSurfaceParams& surface, FilterContext& ctx) {
+  if (r.exact)
+    ctx.log("Exact geodesic distances (window propagation, " + std::to_string(r.windows) + " windows); input " +
+            describe(r.inputQuality));
+  else if (r.exactOverBudget)
+    ctx.log("Exact propagation stopped at its budget (" + std::to_string(r.windows) +
+            " windows): the fronts ran on the refined surface instead");
   if (r.refined)
     ctx.log("Surface refined for the fronts (intrinsic Delaunay, angles >= " +
             formatNumber(surface.intrinsic.minAngleDegrees) + " deg, edges <= " +
             formatNumber(100.0 * surface.maxEdgeFraction) + "% of the diagonal): " + std::to_string(r.insertedPoints) +
             " points inserted; input " + describe(r.inputQuality));
-  else if (surface.refinement == SurfaceRefinement::Off)
+  else if (surface.refinement == SurfaceRefinement::Off && !r.exact)
     ctx.log("Refinement Off: the fronts ran on the triangulation as it is (" + describe(r.inputQuality) + ")");
-  else if (r.refinementSkipped.empty())
+  else if (r.refinementSkipped.empty() && !r.exact)
     ctx.log("Triangulation fine as it is (" + describe(r.inputQuality) + "): not refined");
   if (!r.refinementSkipped.empty())
     ctx.warn("the triangulation is poor but could not be refined (" + r.refinementSkipped +
@@ -67,12 +73,15 @@ void declareFastMarching(const MeshModel& mesh, RichParameterList& params) {
       param::kSurfaceRefinement, int(GeodesicSurfaceParams{}.refinement),
       QStringList() << "Auto"
                     << "On"
-                    << "Off",
+                    << "Off"
+                    << "Exact",
       "Refinement",
-      "Auto (default): where the triangles are poor (slivers, caps: CAD exports) or the mesh is coarse, the fronts "
-      "run on an intrinsic Delaunay refinement of the same surface (every angle >= 25 deg, edges <= 2% of the "
-      "bounding-box diagonal), which fast marching needs to be accurate; well-shaped meshes are used as they are. "
-      "On / Off: always / never refine. The values are read at the mesh's own vertices: nothing is added to the "
+      "Auto (default): where the triangles are poor (slivers, caps: CAD exports) or the mesh is coarse, exact "
+      "geodesic distances by window propagation when that costs about what refining would (CAD parts, small "
+      "meshes), else the fronts run on an intrinsic Delaunay refinement of the same surface (every angle >= 25 deg, "
+      "edges <= 2% of the bounding-box diagonal), which fast marching needs to be accurate; well-shaped meshes are "
+      "used as they are. On / Off: fronts, always / never refined. Exact: exact distances whenever the speed is "
+      "constant (slower on large scans). The values are read at the mesh's own vertices: nothing is added to the "
       "mesh."));
 }
 
@@ -105,9 +114,11 @@ Status applyFastMarching(MeshDocument& doc, const RichParameterList& params, Fil
   if (colorBy != int(ColorBy::Distance) && colorBy != int(ColorBy::VoronoiCell))
     return invalidInput("ColorBy must be 0 (Distance) or 1 (Voronoi cell), got " + std::to_string(colorBy));
   const int refinement = params.getEnum(param::kSurfaceRefinement);
-  if (refinement < int(SurfaceRefinement::Auto) || refinement > int(SurfaceRefinement::Off))
-    return invalidInput("Refinement must be 0 (Auto), 1 (On) or 2 (Off), got " + std::to_string(refinement));
-  gdParams.surface.refinement = SurfaceRefinement(refinement);
+  constexpr int kExact = 3;  // the enum's fourth entry: ExactPropagation::Always
+  if (refinement < int(SurfaceRefinement::Auto) || refinement > kExact)
+    return invalidInput("Refinement must be 0 (Auto), 1 (On), 2 (Off) or 3 (Exact), got " + std::to_string(refinement));
+  gdParams.surface.refinement = refinement == kExact ? SurfaceRefinement::Auto : SurfaceRefinement(refinement);
+  if (refinement == kExact) gdParams.exact = ExactPropagation::Always;
 
   Expected<GeodesicDistanceResult> computed = geodesicDistance(view.mesh, *speed, sources, gdParams, ctx.progress);
   if (!computed) {
@@ -144,6 +155,11 @@ Status applyFastMarching(MeshDocument& doc, const RichParameterList& params, Fil
     ctx.warn("the mesh has " + std::to_string(topology.nonManifoldVertices) +
              " non-manifold vertices; fronts cross them through the vertex only");
   logTriangulation(*computed, gdParams.surface, ctx);
+  if (gdParams.exact == ExactPropagation::Always && !computed->exact)
+    ctx.warn(computed->exactOverBudget
+                 ? "Refinement Exact: the exact propagation ran out of its window budget; the fronts gave the values"
+                 : "Refinement Exact needs a constant speed, a manifold mesh and no edge of zero length; the fronts "
+                   "gave the values");
   ctx.log("Time: " + formatDuration(ms));
   return Status::ok();
 }

@@ -24,10 +24,14 @@ FAMILIES = OrderedDict([
     ("Ours_FastMarcher", ("**Ours**: FastMarcher, reused (reset + propagate)", "Ours_FastMarcher", "field")),
     ("Ours_fastMarching_oneshot", ("Ours: fastMarching() one-shot (engine built per call)", "Ours_FastMarcher",
                                    "field")),
-    ("Ours_geodesicDistance", ("Ours: geodesicDistance() (the filter's call: test, refinement where needed, "
-                               "propagation)", "Ours_FastMarcher", "field")),
+    ("Ours_geodesicDistance", ("Ours: geodesicDistance() (the filter's call: test, then exact propagation or "
+                               "refinement + fronts where needed)", "Ours_FastMarcher", "field")),
+    ("Ours_geodesicDistance_fronts", ("Ours: geodesicDistance() without exact propagation (refinement + fronts "
+                                      "where needed)", "Ours_FastMarcher", "field")),
     ("Dijkstra", ("Dijkstra along edges (baseline)", "Ours_FastMarcher", "field")),
     ("Vcg_Geodesic", ("vcglib tri::Geodesic::Compute (MeshLab)", "Ours_FastMarcher", "field")),
+    ("Cgal_ShortestPath", ("CGAL Surface_mesh_shortest_path (exact): build + all vertices", "Ours_FastMarcher",
+                           "field")),
     ("CgalHeat_BuildQuery", ("CGAL heat, Direct: construction + 1 query", "Ours_FastMarcher", "field")),
     ("CgalHeat_Query", ("CGAL heat, Direct: 1 query (factorised)", "Ours_FastMarcher", "field")),
     ("CgalHeatIdt_BuildQuery", ("CGAL heat, intrinsic Delaunay: construction + 1 query", "Ours_FastMarcher",
@@ -130,6 +134,10 @@ def load(path, use_real):
             "vertices": b.get("vertices"),
             "sources": b.get("sources"),
             "max_dist": b.get("max_dist"),
+            "exact": b.get("exact"),
+            "windows": b.get("windows"),
+            "inserted": b.get("inserted"),
+            "refined": b.get("refined"),
             "repetitions": len(runs),
             "iterations": sum(r.get("iterations", 0) for r in runs),
             "spread": (max(times) - min(times)) / ms if ms > 0 and len(times) > 1 else None,
@@ -147,6 +155,11 @@ def note_for(fam, r, ref):
         notes.append(f"median of {r['repetitions']}{spread}")
     if r.get("manual"):
         notes.append("step alone (manual time)")
+    if r.get("exact"):
+        notes.append(f"exact: {int(r['windows']):,} windows")
+    elif r.get("refined"):
+        over = f" (exact over budget at {int(r['windows']):,} windows)" if r.get("windows") else ""
+        notes.append(f"refined: {int(r['inserted']):,} points inserted{over}")
     reached = r.get("reached")
     if reached is not None and kind == "changed":
         notes.append(f"{int(reached):,} vertices changed")

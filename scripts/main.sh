@@ -6,7 +6,7 @@
 #   resources/uniform_remesh_10pct.mlx      -> <mesh>_remesh.ply    (geodesic uniform remeshing, new layer)
 #   resources/adaptive_curvature_10pct.mlx  -> <mesh>_adaptive.ply  (curvature-adaptive remeshing, new layer)
 # (the remeshing scripts ask for 647 vertices: 10% of fandisk), then the distance from vertex 0 on
-# cheese.off, a CAD-like mesh of slivers: the log says the surface was refined for the fronts
+# cheese.off, a CAD-like mesh of slivers: the log says its distances are exact (window propagation)
 #   resources/fast_marching_vertex0.mlx     -> cheese_geodesic.ply
 # and back on the mesh: resources/segmentation_50.mlx -> <mesh>_segmentation.ply (regions in face
 #   quality and colour), resources/texture_atlas.mlx -> <mesh>_atlas.obj (+ .mtl and the
@@ -63,7 +63,7 @@ run "$root/resources/uniform_remesh_10pct.mlx" "$root/output/${name}_remesh.ply"
 run "$root/resources/adaptive_curvature_10pct.mlx" "$root/output/${name}_adaptive.ply" \
     "curvature-adaptive geodesic remeshing (vertices gather on sharp edges)"
 run "$root/resources/fast_marching_vertex0.mlx" "$root/output/cheese_geodesic.ply" \
-    "distance from vertex 0 on cheese.off (slivers: fronts on its intrinsic Delaunay refinement)" \
+    "distance from vertex 0 on cheese.off (slivers: exact geodesic distances by window propagation)" \
     "$cache/meshes/cheese.off"
 run "$root/resources/segmentation_50.mlx" "$root/output/${name}_segmentation.ply" \
     "50 regions of a geodesic centroidal tessellation, each a disk: region in face quality, one colour per region" \

@@ -42,7 +42,61 @@ FastMarchingResult fieldAtInputVertices(const FastMarcher& marcher, int n) {
   return r;
 }
 
+Status checkSurfaceParams(const GeodesicSurfaceParams& params) {
+  const IntrinsicRefinementParams& ip = params.intrinsic;
+  if (!(ip.minAngleDegrees >= 0.0 && ip.minAngleDegrees < 60.0) || !(ip.maxEdgeLength > 0.0) || ip.maxInsertions < -1 ||
+      !(params.maxEdgeFraction >= 0.0 && std::isfinite(params.maxEdgeFraction)))
+    return invalidInput("refinement parameters out of range: minimum angle " + std::to_string(ip.minAngleDegrees) +
+                        " (in [0, 60) degrees), maximum edge length " + std::to_string(ip.maxEdgeLength) +
+                        " (> 0), budget " + std::to_string(ip.maxInsertions) + " (>= -1), edge fraction " +
+                        std::to_string(params.maxEdgeFraction) + " (>= 0)");
+  return Status::ok();
+}
+
+/// The constant speed of `speed` (1 when empty), or 0 when it varies.
+double constantSpeed(const std::vector<double>& speed) {
+  if (speed.empty()) return 1.0;
+  for (double f : speed)
+    if (f != speed.front()) return 0.0;
+  return speed.front();
+}
+
+/// Exact window propagation when `params` allows it and it finishes within its budget: the field
+/// in `r` (true), or false with `r.windows` / `r.exactOverBudget` telling what was tried.
+Expected<bool> tryExact(const TriMesh& mesh, const std::vector<double>& speed, const std::vector<int>& sources,
+                        const GeodesicDistanceParams& params, GeodesicDistanceResult& r, Progress progress) {
+  if (params.exact == ExactPropagation::Never || params.surface.refinement != SurfaceRefinement::Auto) return false;
+  const double f = constantSpeed(speed);
+  if (!(f > 0.0) || !params.marching.targets.empty() || params.marching.region != nullptr) return false;
+  ExactGeodesicParams ep;
+  if (params.exact == ExactPropagation::WhereCheaper) {
+    if (!r.inputQuality.needsRefinement) return false;
+    ep.maxWindows = exactWindowBudget(r.inputQuality, mesh.vertexCount());
+  }
+  ep.maxDistance = params.marching.maxDistance * f;
+  Expected<ExactGeodesicResult> exact = exactGeodesicDistance(mesh, sources, ep, std::move(progress));
+  if (!exact) {  // a non-manifold mesh or a zero-length edge: the fronts do what they can
+    if (exact.status().code == StatusCode::Cancelled) return exact.status();
+    return false;
+  }
+  r.windows = exact->windows;
+  r.exactOverBudget = exact->budgetExhausted;
+  if (exact->budgetExhausted) return false;
+  r.exact = true;
+  r.field = std::move(exact->field);
+  if (f != 1.0) {
+    for (double& d : r.field.distance) d /= f;
+    r.field.maxDistance /= f;
+  }
+  return true;
+}
+
 }  // namespace
+
+long long exactWindowBudget(const TriangulationQuality& quality, int vertices) {
+  const double poor = std::max({quality.sliverShare, quality.capShare, quality.longEdgeShare});
+  return 50000 + static_cast<long long>(vertices * (10.0 + 100.0 * poor));
+}
 
 FastMarcher GeodesicSurface::makeMarcher() const {
   if (!refined) {  // boundary seeding only: a few vertices, no measurable cost
@@ -58,21 +112,19 @@ FastMarcher GeodesicSurface::makeMarcher() const {
   return marcher;
 }
 
-Expected<GeodesicSurface> prepareGeodesicSurface(const TriMesh& input, const Metric& metric,
-                                                 const GeodesicSurfaceParams& params, Progress progress) {
+namespace {
+
+/// prepareGeodesicSurface with the test's figures already known.
+Expected<GeodesicSurface> prepareSurface(const TriMesh& input, const Metric& metric,
+                                         const GeodesicSurfaceParams& params, const TriangulationQuality& quality,
+                                         Progress progress) {
   if (!metric.isUniform() && static_cast<int>(metric.P.size()) != input.vertexCount())
     return invalidInput("the metric has " + std::to_string(metric.P.size()) + " values for " +
                         std::to_string(input.vertexCount()) + " vertices");
-  const IntrinsicRefinementParams& ip = params.intrinsic;
-  if (!(ip.minAngleDegrees >= 0.0 && ip.minAngleDegrees < 60.0) || !(ip.maxEdgeLength > 0.0) || ip.maxInsertions < -1 ||
-      !(params.maxEdgeFraction >= 0.0 && std::isfinite(params.maxEdgeFraction)))
-    return invalidInput("refinement parameters out of range: minimum angle " + std::to_string(ip.minAngleDegrees) +
-                        " (in [0, 60) degrees), maximum edge length " + std::to_string(ip.maxEdgeLength) +
-                        " (> 0), budget " + std::to_string(ip.maxInsertions) + " (>= -1), edge fraction " +
-                        std::to_string(params.maxEdgeFraction) + " (>= 0)");
+  if (Status st = checkSurfaceParams(params); !st) return st;
   GeodesicSurface s;
   s.input = &input;
-  s.inputQuality = assessTriangulation(input);
+  s.inputQuality = quality;
   s.metric = metric;
   if (!wantsRefinement(params, s.inputQuality)) return s;
   IntrinsicRefinementParams intrinsic = params.intrinsic;
@@ -104,33 +156,44 @@ Expected<GeodesicSurface> prepareGeodesicSurface(const TriMesh& input, const Met
   return s;
 }
 
+}  // namespace
+
+Expected<GeodesicSurface> prepareGeodesicSurface(const TriMesh& input, const Metric& metric,
+                                                 const GeodesicSurfaceParams& params, Progress progress) {
+  return prepareSurface(input, metric, params, assessTriangulation(input), std::move(progress));
+}
+
 Expected<GeodesicDistanceResult> geodesicDistance(const TriMesh& mesh, const std::vector<double>& speed,
                                                   const std::vector<int>& sources, const GeodesicDistanceParams& params,
                                                   Progress progress) {
   if (Status s = checkDistanceInput(mesh, sources, params.marching); !s) return s;
+  if (Status s = checkSurfaceParams(params.surface); !s) return s;
   Metric metric = Metric::uniform();
-  if (!speed.empty()) {
+  if (!speed.empty()) {  // checked whichever method runs
     Expected<Metric> fromSpeed = Metric::fromSpeed(mesh, speed);
     if (!fromSpeed) return fromSpeed.status();
     metric = std::move(*fromSpeed);
   }
+  GeodesicDistanceResult r;
+  r.inputQuality = assessTriangulation(mesh);
+  Expected<bool> exact = tryExact(mesh, speed, sources, params, r, progress.sub(0.0, 0.3));
+  if (!exact) return exact.status();
+  if (*exact) return r;
   const GeodesicSurfaceParams& sp = params.surface;
   const bool mayRefine = sp.refinement != SurfaceRefinement::Off;
   Expected<GeodesicSurface> surface =
-      prepareGeodesicSurface(mesh, metric, sp, mayRefine ? progress.sub(0.0, 0.5) : Progress());
+      prepareSurface(mesh, metric, sp, r.inputQuality, mayRefine ? progress.sub(0.0, 0.5) : Progress());
   if (!surface) return surface.status();
   FastMarcher marcher = surface->makeMarcher();
   for (size_t i = 0; i < sources.size(); ++i)
     if (Status s = marcher.addSource(sources[i], static_cast<int>(i)); !s) return s;
   Progress marching = surface->refined ? progress.sub(0.5, 1.0) : std::move(progress);
   if (Status s = marcher.propagate(params.marching, std::move(marching)); !s) return s;
-  GeodesicDistanceResult r;
   r.field = fieldAtInputVertices(marcher, mesh.vertexCount());
   r.refined = surface->refined;
   r.insertedPoints = surface->insertedPoints();
   r.facesBelowMinAngle = surface->refined ? surface->refinement.facesBelowMinAngle : 0;
   r.budgetExhausted = surface->refined && surface->refinement.budgetExhausted;
-  r.inputQuality = surface->inputQuality;
   r.refinementSkipped = surface->refinementSkipped;
   return r;
 }

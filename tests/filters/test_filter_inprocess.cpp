@@ -300,8 +300,8 @@ TEST_F(FilterInProcess, ImpossibleParameters) {
   params.setValue(filters::param::kColorBy, EnumValue(7));
   expectCleanFailure(*mm, StatusCode::InvalidInput, "ColorBy must be 0");
   declare(*mm);
-  params.setValue(filters::param::kSurfaceRefinement, EnumValue(3));
-  expectCleanFailure(*mm, StatusCode::InvalidInput, "Refinement must be 0 (Auto), 1 (On) or 2 (Off), got 3");
+  params.setValue(filters::param::kSurfaceRefinement, EnumValue(4));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "Refinement must be 0 (Auto), 1 (On), 2 (Off) or 3 (Exact), got 4");
   declare(*mm);
   params.setValue(filters::param::kSurfaceRefinement, EnumValue(-1));
   expectCleanFailure(*mm, StatusCode::InvalidInput, "Refinement must be 0");
@@ -336,22 +336,32 @@ class FastMarchingRefined : public FilterInProcess {
     mesh = layerMesh(*gear);
     exact = oracle::exactGeodesic(mesh, 0);
   }
-  /// Runs the filter from the selected `sources` with the given refinement; the log of this run.
-  std::string run(const std::vector<int>& sources, SurfaceRefinement refinement) {
+  /// Runs the filter from the selected `sources` with the given Refinement entry (0 Auto, 1 On,
+  /// 2 Off, 3 Exact); the log of this run.
+  std::string run(const std::vector<int>& sources, int refinement) {
     for (auto& v : gear->cm.vert) v.ClearS();
     for (int s : sources) gear->cm.vert[s].SetS();
     declare(*gear);
-    params.setValue(filters::param::kSurfaceRefinement, EnumValue(int(refinement)));
+    params.setValue(filters::param::kSurfaceRefinement, EnumValue(refinement));
     log.Clear();
     EXPECT_TRUE(apply()) << logText();
     return logText();
   }
 };
 
-// Auto refines the gear's slivers (the log says so, with the points inserted), Off does not;
-// Auto's quality is the core's geodesicDistance and within 1% of exact on average, Off's is worse.
+// Auto gives the gear exact distances (window propagation: the log says so, with the windows); On
+// refines its slivers (the log says so, with the points inserted), Off does not; On's quality is
+// the core's geodesicDistance and within 1% of exact on average, Off's is worse.
 TEST_F(FastMarchingRefined, AutoRefinesTheSliverMeshAndIsCloserToExactThanOff) {
-  const std::string autoLog = run({0}, SurfaceRefinement::Auto);
+  const std::string exactLog = run({0}, int(SurfaceRefinement::Auto));
+  EXPECT_NE(exactLog.find("Exact geodesic distances (window propagation, "), std::string::npos) << exactLog;
+  EXPECT_GT(test::numberBefore(exactLog, "windows"), 0) << exactLog;
+  EXPECT_EQ(exactLog.find("Surface refined"), std::string::npos) << exactLog;
+  const DistanceError exactError = distanceError(vertexQualities(*gear), exact);
+  EXPECT_LE(exactError.maxRelativeToMax, 1e-6);                                // the quality is a float
+  EXPECT_NE(run({0}, 3).find("Exact geodesic distances"), std::string::npos);  // Exact: the same
+
+  const std::string autoLog = run({0}, int(SurfaceRefinement::On));
   const std::vector<double> autoQ = vertexQualities(*gear);
   EXPECT_NE(autoLog.find("Surface refined for the fronts (intrinsic Delaunay, angles >= 25 deg, edges <= 2% of the "
                          "diagonal): "),
@@ -360,13 +370,15 @@ TEST_F(FastMarchingRefined, AutoRefinesTheSliverMeshAndIsCloserToExactThanOff) {
   EXPECT_GT(test::numberBefore(autoLog, "points inserted"), 0) << autoLog;
   EXPECT_NE(autoLog.find(describe(assessTriangulation(mesh))), std::string::npos) << autoLog;
   EXPECT_LT(autoLog.find("Surface refined"), autoLog.find("Time: ")) << "the Time line is last";
-  const Expected<GeodesicDistanceResult> core = geodesicDistance(mesh, {}, {0});
+  GeodesicDistanceParams on;
+  on.surface.refinement = SurfaceRefinement::On;
+  const Expected<GeodesicDistanceResult> core = geodesicDistance(mesh, {}, {0}, on);
   ASSERT_TRUE(core);
   ASSERT_TRUE(core->refined);
   for (int v = 0; v < mesh.vertexCount(); ++v)
     ASSERT_NEAR(autoQ[v], core->field.distance[v], 1e-6 * (1 + core->field.distance[v])) << v;
 
-  const std::string offLog = run({0}, SurfaceRefinement::Off);
+  const std::string offLog = run({0}, int(SurfaceRefinement::Off));
   const std::vector<double> offQ = vertexQualities(*gear);
   EXPECT_EQ(offLog.find("Surface refined"), std::string::npos) << offLog;
   EXPECT_NE(offLog.find("Refinement Off: the fronts ran on the triangulation as it is (" +
@@ -375,7 +387,7 @@ TEST_F(FastMarchingRefined, AutoRefinesTheSliverMeshAndIsCloserToExactThanOff) {
       << offLog;
 
   const DistanceError autoError = distanceError(autoQ, exact), offError = distanceError(offQ, exact);
-  std::printf("cad_gear %d v, %d points inserted: Auto mean %.3f %% max %.3f %% | Off mean %.3f %% max %.3f %%\n",
+  std::printf("cad_gear %d v, %d points inserted: On mean %.3f %% max %.3f %% | Off mean %.3f %% max %.3f %%\n",
               mesh.vertexCount(), core->insertedPoints, 100 * autoError.meanRelative, 100 * autoError.maxRelativeToMax,
               100 * offError.meanRelative, 100 * offError.maxRelativeToMax);
   EXPECT_EQ(autoError.comparedVertices, offError.comparedVertices);
@@ -384,73 +396,93 @@ TEST_F(FastMarchingRefined, AutoRefinesTheSliverMeshAndIsCloserToExactThanOff) {
   EXPECT_LT(autoError.maxRelativeToMax, offError.maxRelativeToMax);
 }
 
-// MaxDistance on the refined surface: unreached vertices get -1, reached ones are within the limit.
+/// The log line of each Refinement entry run on the gear: Auto's exact propagation, On's refinement.
+const char* methodLine(int refinement) { return refinement == 0 ? "Exact geodesic distances" : "Surface refined"; }
+
+// MaxDistance with exact propagation (Auto) and on the refined surface (On): unreached vertices
+// get -1, reached ones are within the limit.
 TEST_F(FastMarchingRefined, MaxDistanceOnTheRefinedSurface) {
-  const double limit = 0.5 * *std::max_element(exact.begin(), exact.end());
-  for (auto& v : gear->cm.vert) v.ClearS();
-  gear->cm.vert[0].SetS();
-  declare(*gear);
-  params.setValue(filters::param::kMaxDistance, AbsPercValue(float(limit)));
-  ASSERT_TRUE(apply()) << logText();
-  EXPECT_NE(logText().find("Surface refined"), std::string::npos) << logText();
-  int reached = 0;
-  for (int v = 0; v < mesh.vertexCount(); ++v) {
-    const float q = gear->cm.vert[v].cQ();
-    ASSERT_TRUE(q == -1.0f || (q >= 0.0f && q <= float(limit))) << v << ": " << q;
-    reached += q >= 0.0f;
-    // Within 1% of the limit, exact geodesics say on which side of it a vertex is.
-    if (exact[v] < 0.99 * limit) {
-      EXPECT_GE(q, 0.0f) << v;
-    } else if (exact[v] > 1.01 * limit) {
-      EXPECT_EQ(q, -1.0f) << v;
+  for (int refinement : {0, 1}) {
+    SCOPED_TRACE(refinement);
+    const double limit = 0.5 * *std::max_element(exact.begin(), exact.end());
+    for (auto& v : gear->cm.vert) v.ClearS();
+    gear->cm.vert[0].SetS();
+    declare(*gear);
+    params.setValue(filters::param::kMaxDistance, AbsPercValue(float(limit)));
+    params.setValue(filters::param::kSurfaceRefinement, EnumValue(refinement));
+    log.Clear();
+    ASSERT_TRUE(apply()) << logText();
+    EXPECT_NE(logText().find(methodLine(refinement)), std::string::npos) << logText();
+    int reached = 0;
+    for (int v = 0; v < mesh.vertexCount(); ++v) {
+      const float q = gear->cm.vert[v].cQ();
+      ASSERT_TRUE(q == -1.0f || (q >= 0.0f && q <= float(limit))) << v << ": " << q;
+      reached += q >= 0.0f;
+      // Within 1% of the limit, exact geodesics say on which side of it a vertex is.
+      if (exact[v] < 0.99 * limit) {
+        EXPECT_GE(q, 0.0f) << v;
+      } else if (exact[v] > 1.01 * limit) {
+        EXPECT_EQ(q, -1.0f) << v;
+      }
     }
+    EXPECT_GT(reached, 0);
+    EXPECT_LT(reached, mesh.vertexCount());
+    EXPECT_NE(logText().find("were not reached"), std::string::npos) << logText();
   }
-  EXPECT_GT(reached, 0);
-  EXPECT_LT(reached, mesh.vertexCount());
-  EXPECT_NE(logText().find("were not reached"), std::string::npos) << logText();
 }
 
-// Two sources, ColorBy = Voronoi cell: away from the bisector, each vertex has its nearest source's
-// colour by the exact distances; UseQualityAsSpeed with quality 2 halves the distance.
+// Two sources, ColorBy = Voronoi cell, exact (Auto) and on the refined surface (On): away from
+// the bisector, each vertex has its nearest source's colour by the exact distances;
+// UseQualityAsSpeed with quality 2 halves the distance.
 TEST_F(FastMarchingRefined, VoronoiCellsAndSpeedOnTheRefinedSurface) {
   const int far = static_cast<int>(std::max_element(exact.begin(), exact.end()) - exact.begin());
   const std::vector<double> exactFar = oracle::exactGeodesic(mesh, far);
-  for (auto& v : gear->cm.vert) v.ClearS();
-  gear->cm.vert[0].SetS();
-  gear->cm.vert[far].SetS();
-  declare(*gear);
-  params.setValue(filters::param::kColorBy, EnumValue(int(filters::ColorBy::VoronoiCell)));
-  ASSERT_TRUE(apply()) << logText();
-  EXPECT_NE(logText().find("Surface refined"), std::string::npos) << logText();
-  const vcg::Color4b colour0 = gear->cm.vert[0].cC(), colourFar = gear->cm.vert[far].cC();
-  ASSERT_NE(colour0, colourFar);
-  int compared = 0, wrong = 0;
-  for (int v = 0; v < mesh.vertexCount(); ++v) {
-    if (std::abs(exact[v] - exactFar[v]) < 0.02 * exact[far]) continue;  // near the bisector
-    ++compared;
-    wrong += gear->cm.vert[v].cC() != (exact[v] < exactFar[v] ? colour0 : colourFar);
-  }
-  EXPECT_GT(compared, mesh.vertexCount() / 2);
-  EXPECT_EQ(wrong, 0);
+  for (int refinement : {0, 1}) {
+    SCOPED_TRACE(refinement);
+    gear->clearDataMask(MeshModel::MM_VERTQUALITY);
+    for (auto& v : gear->cm.vert) v.ClearS();
+    gear->cm.vert[0].SetS();
+    gear->cm.vert[far].SetS();
+    declare(*gear);
+    params.setValue(filters::param::kColorBy, EnumValue(int(filters::ColorBy::VoronoiCell)));
+    params.setValue(filters::param::kSurfaceRefinement, EnumValue(refinement));
+    log.Clear();
+    ASSERT_TRUE(apply()) << logText();
+    EXPECT_NE(logText().find(methodLine(refinement)), std::string::npos) << logText();
+    const vcg::Color4b colour0 = gear->cm.vert[0].cC(), colourFar = gear->cm.vert[far].cC();
+    ASSERT_NE(colour0, colourFar);
+    int compared = 0, wrong = 0;
+    for (int v = 0; v < mesh.vertexCount(); ++v) {
+      if (std::abs(exact[v] - exactFar[v]) < 0.02 * exact[far]) continue;  // near the bisector
+      ++compared;
+      wrong += gear->cm.vert[v].cC() != (exact[v] < exactFar[v] ? colour0 : colourFar);
+    }
+    EXPECT_GT(compared, mesh.vertexCount() / 2);
+    EXPECT_EQ(wrong, 0);
 
-  // Speed 2 everywhere: twice the travel time is the distance to the nearest source.
-  for (auto& v : gear->cm.vert) v.Q() = 2.0f;
-  gear->updateDataMask(MeshModel::MM_VERTQUALITY);
-  declare(*gear);
-  params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
-  log.Clear();
-  ASSERT_TRUE(apply()) << logText();
-  EXPECT_NE(logText().find("Surface refined"), std::string::npos) << logText();
-  std::vector<double> twice(mesh.vertexCount()), nearest(mesh.vertexCount());
-  for (int v = 0; v < mesh.vertexCount(); ++v) {
-    ASSERT_GE(gear->cm.vert[v].cQ(), 0.0f) << "vertex " << v << " not reached";
-    twice[v] = 2.0 * gear->cm.vert[v].cQ();
-    nearest[v] = std::min(exact[v], exactFar[v]);
+    // Speed 2 everywhere: twice the travel time is the distance to the nearest source.
+    for (auto& v : gear->cm.vert) v.Q() = 2.0f;
+    gear->updateDataMask(MeshModel::MM_VERTQUALITY);
+    declare(*gear);
+    params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
+    params.setValue(filters::param::kSurfaceRefinement, EnumValue(refinement));
+    log.Clear();
+    ASSERT_TRUE(apply()) << logText();
+    EXPECT_NE(logText().find(methodLine(refinement)), std::string::npos) << logText();
+    std::vector<double> twice(mesh.vertexCount()), nearest(mesh.vertexCount());
+    for (int v = 0; v < mesh.vertexCount(); ++v) {
+      ASSERT_GE(gear->cm.vert[v].cQ(), 0.0f) << "vertex " << v << " not reached";
+      twice[v] = 2.0 * gear->cm.vert[v].cQ();
+      nearest[v] = std::min(exact[v], exactFar[v]);
+    }
+    const DistanceError e = distanceError(twice, nearest);
+    std::printf("cad_gear, speed 2, two sources: twice the time vs exact: mean %.3f %% max %.3f %%\n",
+                100 * e.meanRelative, 100 * e.maxRelativeToMax);
+    EXPECT_LE(e.meanRelative, 0.01);
+    if (refinement == 0) {
+      EXPECT_LE(e.maxRelativeToMax, 1e-6);
+    }
   }
-  const DistanceError e = distanceError(twice, nearest);
-  std::printf("cad_gear, speed 2, two sources: twice the time vs exact: mean %.3f %% max %.3f %%\n",
-              100 * e.meanRelative, 100 * e.maxRelativeToMax);
-  EXPECT_LE(e.meanRelative, 0.01);
 }
 
 // A failing case on the refined surface (a zero speed) leaves the gear as it was.

@@ -189,8 +189,8 @@ Expected<ArapResult> relaxAsRigidAsPossible(const TriMesh& patch, std::vector<Ve
   if (uv.size() != static_cast<size_t>(patch.vertexCount()))
     return invalidInput("ARAP relaxation: " + std::to_string(uv.size()) + " UVs for " +
                         std::to_string(patch.vertexCount()) + " vertices");
-  if (params.rounds < 0 || !(params.tolerance >= 0.0))
-    return invalidInput("ARAP relaxation: rounds < 0 or tolerance < 0");
+  if (params.rounds < 0 || !(params.tolerance >= 0.0) || !(params.negligible >= 0.0))
+    return invalidInput("ARAP relaxation: rounds < 0, tolerance < 0 or negligible < 0");
   if (!checkUvInjectivity(patch, uv).injective())
     return invalidInput("ARAP relaxation: the map given is not one-to-one");
   ArapResult r;
@@ -200,7 +200,10 @@ Expected<ArapResult> relaxAsRigidAsPossible(const TriMesh& patch, std::vector<Ve
   std::vector<Eigen::Matrix2d> rotation(patch.faceCount());
   r.energyBefore = r.energyAfter = localStep(patch, faces, current, rotation);
   uv = current;
-  if (params.rounds == 0) return r;
+  double area = 0.0;
+  for (int f = 0; f < patch.faceCount(); ++f) area += faceArea(patch, f);
+  const double negligible = params.negligible * area;
+  if (params.rounds == 0 || r.energyBefore <= negligible) return r;
   System system;
   if (Status s = factorise(patch, faces, system); !s) return s;
   std::vector<Vec2> next(current.size());
@@ -216,7 +219,7 @@ Expected<ArapResult> relaxAsRigidAsPossible(const TriMesh& patch, std::vector<Ve
       r.energyAfter = energy;
       uv = current;
     }
-    if (!(previous - energy > params.tolerance * previous)) break;
+    if (!(previous - energy > params.tolerance * previous) || energy <= negligible) break;
   }
   return r;
 }

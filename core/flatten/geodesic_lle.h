@@ -2,9 +2,10 @@
 // of a patch to the plane without a linear system over all its vertices.
 //
 //   patch (a topological disk) --farthestPointSampling--> B base points
-//     --B fronts (FastMarcher), each stopped at 5 covering radii of the sampling (farther where a
-//       vertex sees fewer than K + 1 bases)--> d(v, base j) for the bases near each vertex v; the
-//       distances between bases that no front reached by shortest paths through the bases' graph
+//     --B fronts (FastMarcher), each stopped at 2.5 covering radii of the sampling (farther where a
+//       vertex sees fewer than 4 bases)--> d(v, base j) for the bases near each vertex v; between
+//       bases, the fronts' own values, else the least d(v, i) + d(v, j) over the vertices both
+//       reached, else shortest paths through the bases' graph
 //     --per base i: its K nearest bases, the local Gram matrix of the geodesic distances
 //       G_jk = (d_ij^2 + d_ik^2 - d_jk^2) / 2, weights w from (G + r tr(G)/K I) w = 1, sum w = 1
 //       (Roweis & Saul 2000)--> W (B x B)
@@ -32,7 +33,7 @@
 // ARAP, 1.251 with the regulariser 1e-3 and no stress, smoothing or ARAP step).
 //
 // Boundary: Free (LLE's own) or Circle (Tutte's embedding from the start). Cost: B fronts over
-// about a third of the patch each (at most B whole fronts, O(B V log V)), the Nyström extension
+// about a tenth of the patch each (at most B whole fronts, O(B V log V)), the Nyström extension
 // O(V K^3), the eigenproblem and the bases' graph O(B^3); the Tutte fallback one sparse solve; the
 // ARAP relaxation one sparse factorisation and a back-substitution per round.
 #pragma once

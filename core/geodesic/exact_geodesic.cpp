@@ -27,8 +27,8 @@ struct Point2 {
 
 /// An interval of an edge reached by straight lines from one image of a (pseudo-)source.
 struct Window {
-  int corner = -1;  ///< the edge facing this corner; the window crosses into the face beyond it
-  int cell = -1;    ///< the source
+  int corner = -1;            ///< the edge facing this corner; the window crosses into the face beyond it
+  int cell = -1;              ///< the source
   double t0 = 0.0, t1 = 0.0;  ///< interval along the edge, from vertex(next(corner)) to vertex(prev(corner))
   Point2 image;               ///< the (pseudo-)source in the edge's frame: y <= 0, on the corner's side
   double sigma = 0.0;         ///< the (pseudo-)source's own distance
@@ -238,10 +238,8 @@ Status WindowPropagation::run(const std::vector<int>& sources, Progress& progres
   const double nv = mesh_.vertexCount();
   long long steps = 0;
   while (!windows_.empty() || !vertices_.empty()) {
-    if ((++steps & 4095) == 0 && !progress.report(order_.size() / nv, "Exact geodesics"))
-      return cancelled();
-    const bool vertexFirst =
-        !vertices_.empty() && (windows_.empty() || vertices_.top().key <= windows_.top().key);
+    if ((++steps & 4095) == 0 && !progress.report(order_.size() / nv, "Exact geodesics")) return cancelled();
+    const bool vertexFirst = !vertices_.empty() && (windows_.empty() || vertices_.top().key <= windows_.top().key);
     if (vertexFirst) {
       const VertexEvent e = vertices_.top();
       vertices_.pop();

@@ -47,8 +47,7 @@ TEST(ExactGeodesic, ChordsOfAFannedPolygon) {
   const int source = n / 2;  // across from the fan's centre: every path crosses the slivers
   const std::vector<double> d = exactFrom(m, source);
   ASSERT_EQ(static_cast<int>(d.size()), n);
-  for (int v = 0; v < n; ++v)
-    EXPECT_NEAR(d[v], (m.positions[v] - m.positions[source]).norm(), 1e-12) << "corner " << v;
+  for (int v = 0; v < n; ++v) EXPECT_NEAR(d[v], (m.positions[v] - m.positions[source]).norm(), 1e-12) << "corner " << v;
 }
 
 // A prism of 48 sides, 4 high, radius 1, open at both ends, with vertices only on its two rims
@@ -115,8 +114,8 @@ TEST_P(DataSetExact, SameAsCgalExactGeodesics) {
   EXPECT_LE(e.meanRelative, 1e-5);
   EXPECT_LE(e.maxRelativeToMax, 5e-4);
   for (int v = 0; v < m.vertexCount(); ++v)  // reached exactly where the source's component is
-    EXPECT_EQ(std::isfinite(r->field.distance[v]),
-              m.topology.componentOfVertex[v] == m.topology.componentOfVertex[0]) << "vertex " << v;
+    EXPECT_EQ(std::isfinite(r->field.distance[v]), m.topology.componentOfVertex[v] == m.topology.componentOfVertex[0])
+        << "vertex " << v;
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, DataSetExact, ::testing::ValuesIn(test::dataSetMeshFiles()),

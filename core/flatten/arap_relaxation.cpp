@@ -185,13 +185,14 @@ bool injectiveStep(const TriMesh& patch, const std::vector<Vec2>& uv, const std:
 
 }  // namespace
 
-Expected<ArapResult> relaxAsRigidAsPossible(const TriMesh& patch, std::vector<Vec2>& uv, const ArapParams& params) {
+Expected<ArapResult> relaxAsRigidAsPossible(const TriMesh& patch, std::vector<Vec2>& uv, const ArapParams& params,
+                                            bool checked) {
   if (uv.size() != static_cast<size_t>(patch.vertexCount()))
     return invalidInput("ARAP relaxation: " + std::to_string(uv.size()) + " UVs for " +
                         std::to_string(patch.vertexCount()) + " vertices");
   if (params.rounds < 0 || !(params.tolerance >= 0.0) || !(params.negligible >= 0.0))
     return invalidInput("ARAP relaxation: rounds < 0, tolerance < 0 or negligible < 0");
-  if (!checkUvInjectivity(patch, uv).injective())
+  if (!checked && !checkUvInjectivity(patch, uv).injective())
     return invalidInput("ARAP relaxation: the map given is not one-to-one");
   ArapResult r;
   std::vector<Vec2> current = uv;

@@ -49,6 +49,9 @@ struct ArapResult {
 /// towards the ARAP minimiser; on return `uv` is the one-to-one map of lowest energy met, at the
 /// patch's scale. Fails with InvalidInput if `uv` has the wrong size or is not one-to-one on entry
 /// (then `uv` is unchanged), InternalError if the system cannot be factorised.
-Expected<ArapResult> relaxAsRigidAsPossible(const TriMesh& patch, std::vector<Vec2>& uv, const ArapParams& params = {});
+/// `checked`: the caller has just checked that `uv` is one-to-one (checkUvInjectivity), which is
+/// then not checked again.
+Expected<ArapResult> relaxAsRigidAsPossible(const TriMesh& patch, std::vector<Vec2>& uv, const ArapParams& params = {},
+                                            bool checked = false);
 
 }  // namespace gr

@@ -130,8 +130,9 @@ std::vector<int> underCovered(int vertices, const std::vector<std::vector<std::p
   return lacking;
 }
 
-/// Missing distances between bases: shortest paths through the known ones (Dijkstra per base).
-void completeBetween(Eigen::MatrixXd& between) {
+/// Missing distances between bases: shortest paths through the known ones (Dijkstra per base, up
+/// to `limit`: farther pairs are never read, and stay unreached).
+void completeBetween(Eigen::MatrixXd& between, double limit) {
   const int nb = static_cast<int>(between.rows());
   for (int i = 0; i < nb; ++i)
     for (int j = 0; j < nb; ++j)  // symmetric: the smaller of the two fronts' values
@@ -145,7 +146,7 @@ void completeBetween(Eigen::MatrixXd& between) {
       int u = -1;
       for (int j = 0; j < nb; ++j)
         if (!done[j] && (u < 0 || d[j] < d[u])) u = j;
-      if (u < 0 || !std::isfinite(d[u])) break;
+      if (u < 0 || !std::isfinite(d[u]) || d[u] > limit) break;
       done[u] = 1;
       for (int j = 0; j < nb; ++j)
         if (std::isfinite(between(u, j))) d[j] = std::min(d[j], d[u] + between(u, j));
@@ -218,7 +219,9 @@ Expected<BaseField> baseDistances(const TriMesh& patch, const LleFlatteningParam
     const auto begin = f.near.begin() + f.nearBegin[v], end = f.near.begin() + f.nearBegin[v + 1];
     std::partial_sort(begin, begin + std::min<std::ptrdiff_t>(p.neighbours, end - begin), end);
   }
-  completeBetween(f.between);
+  // The pairs read later (a base's or a vertex's K nearest bases, pairwise) lie within twice the
+  // fronts' radius of each other; three times is a margin.
+  completeBetween(f.between, radius > 0.0 ? 3.0 * radius : kUnreached);
   return f;
 }
 
@@ -526,13 +529,15 @@ void matchArea(const TriMesh& patch, std::vector<Vec2>& uv) {
 }
 
 /// The map after params.arapRounds of ARAP relaxation (one-to-one kept; a map the relaxation
-/// refuses, which a one-to-one map is not, is returned as it was).
-Expected<LleFlatteningResult> relaxed(const TriMesh& patch, const LleFlatteningParams& params, LleFlatteningResult r) {
+/// refuses, which a one-to-one map is not, is returned as it was). `checked`: r.uv was just found
+/// one-to-one.
+Expected<LleFlatteningResult> relaxed(const TriMesh& patch, const LleFlatteningParams& params, LleFlatteningResult r,
+                                      bool checked) {
   if (params.arapRounds <= 0) return r;
   ArapParams arap;
   arap.rounds = params.arapRounds;
   std::vector<Vec2> uv = r.uv;
-  Expected<ArapResult> a = relaxAsRigidAsPossible(patch, uv, arap);
+  Expected<ArapResult> a = relaxAsRigidAsPossible(patch, uv, arap, checked);
   if (!a) return a.status().code == StatusCode::InvalidInput ? Expected<LleFlatteningResult>(std::move(r)) : a.status();
   r.uv = std::move(uv);
   r.arapRounds = a->rounds;
@@ -569,7 +574,7 @@ Expected<LleFlatteningResult> flattenGeodesicLle(const TriMesh& patch, const Lle
     // No fold left; the boundary may still run over itself (a free boundary bends freely).
     if (unfolded && checkUvInjectivity(patch, r.uv).injective()) {
       if (!r.metricCorrected) matchArea(patch, r.uv);
-      return relaxed(patch, params, std::move(r));
+      return relaxed(patch, params, std::move(r), /*checked=*/true);
     }
   }
   Expected<std::vector<Vec2>> tutte = tutteEmbedding(patch);
@@ -579,7 +584,7 @@ Expected<LleFlatteningResult> flattenGeodesicLle(const TriMesh& patch, const Lle
   foldedFaces(patch, r.uv);  // orientation as the patch's
   matchArea(patch, r.uv);
   if (params.boundary == LleBoundary::Circle) return r;
-  return relaxed(patch, params, std::move(r));
+  return relaxed(patch, params, std::move(r), /*checked=*/false);
 }
 
 }  // namespace gr

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <queue>
 #include <string>
 #include <utility>
@@ -20,6 +21,8 @@ constexpr double kDropTolerance = 1e-12;
 /// A window sees a vertex when the vertex's projection on the window's edge is within this share
 /// of the edge's length of the window's interval; shorter windows are not kept.
 constexpr double kSeeTolerance = 1e-10;
+/// The default budget's ceiling: about 7 s of work and, at worst, a few GB of live windows.
+constexpr long long kMaxDefaultWindows = 30000000;
 
 struct Point2 {
   double x = 0.0, y = 0.0;
@@ -92,7 +95,7 @@ class WindowPropagation {
 WindowPropagation::WindowPropagation(const TriMesh& mesh, const ExactGeodesicParams& params)
     : mesh_(mesh), params_(params) {
   const int nv = mesh.vertexCount();
-  budget_ = params.maxWindows > 0 ? params.maxWindows : 2000LL * nv + 100000;
+  budget_ = params.maxWindows > 0 ? params.maxWindows : std::min(2000LL * nv + 100000, kMaxDefaultWindows);
   len_.resize(3 * mesh.faceCount());
   for (int c = 0; c < 3 * mesh.faceCount(); ++c)
     len_[c] = (mesh.positions[mesh.vertex(TriMesh::next(c))] - mesh.positions[mesh.vertex(TriMesh::prev(c))]).norm();
@@ -286,9 +289,13 @@ Expected<ExactGeodesicResult> exactGeodesicDistance(const TriMesh& mesh, const s
     if (mesh.positions[mesh.vertex(TriMesh::next(c))] == mesh.positions[mesh.vertex(TriMesh::prev(c))])
       return invalidInput("exact geodesics need edges of non-zero length (face " + std::to_string(TriMesh::face(c)) +
                           " has one)");
-  WindowPropagation propagation(mesh, params);
-  if (Status s = propagation.run(sources, progress); !s) return s;
-  return propagation.result();
+  try {
+    WindowPropagation propagation(mesh, params);
+    if (Status s = propagation.run(sources, progress); !s) return s;
+    return propagation.result();
+  } catch (const std::bad_alloc&) {
+    return outOfMemory("exact geodesics ran out of memory for their windows");
+  }
 }
 
 }  // namespace gr

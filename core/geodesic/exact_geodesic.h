@@ -35,7 +35,7 @@ struct ExactGeodesicParams {
   /// Vertices farther than this stay unreached (kUnreached, cell -1). +inf (default) = no limit.
   double maxDistance = kUnreached;
   /// The windows a run may create before it gives up (result.budgetExhausted); 0 (default) =
-  /// 2,000 per vertex plus 100,000 (about 100 MB for a 1,000-vertex mesh).
+  /// 2,000 per vertex plus 100,000, at most 30 million (about 7 s).
   long long maxWindows = 0;
 };
 
@@ -50,7 +50,7 @@ struct ExactGeodesicResult {
 /// Exact multi-source geodesic distance from the given vertices. The mesh must be manifold (edges
 /// and vertices; NonManifold otherwise) with no edge of zero length (InvalidInput); orientation
 /// does not matter. Fails with InvalidInput (no source, a source out of range, a negative limit),
-/// Cancelled if `progress` says so.
+/// OutOfMemory, Cancelled if `progress` says so.
 Expected<ExactGeodesicResult> exactGeodesicDistance(const TriMesh& mesh, const std::vector<int>& sources,
                                                     const ExactGeodesicParams& params = {}, Progress progress = {});
 

@@ -77,6 +77,7 @@ Expected<bool> tryExact(const TriMesh& mesh, const std::vector<double>& speed, c
   Expected<ExactGeodesicResult> exact = exactGeodesicDistance(mesh, sources, ep, std::move(progress));
   if (!exact) {  // a non-manifold mesh or a zero-length edge: the fronts do what they can
     if (exact.status().code == StatusCode::Cancelled) return exact.status();
+    r.exactOverBudget = exact.status().code == StatusCode::OutOfMemory;
     return false;
   }
   r.windows = exact->windows;

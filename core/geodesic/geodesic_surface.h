@@ -127,7 +127,7 @@ struct GeodesicDistanceResult {
   std::string refinementSkipped;  ///< see GeodesicSurface
   bool exact = false;             ///< the field is exact window propagation's
   long long windows = 0;          ///< windows it created (also when it ran out and fronts took over)
-  bool exactOverBudget = false;   ///< it was tried and ran out of windows: the fronts gave the field
+  bool exactOverBudget = false;   ///< it was tried and ran out of windows (or memory): the fronts gave the field
 };
 
 /// The windows exact propagation may create on `mesh` under ExactPropagation::WhereCheaper before

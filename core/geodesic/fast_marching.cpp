@@ -38,6 +38,7 @@ FastMarcher::FastMarcher(const TriMesh& mesh, const std::vector<double>* cornerL
   if (!metric.isUniform())
     for (int i = 0; i < nv; ++i) P_[i] = metric.P[vertexOf_[i]];
   const AcuteSplits splits = splitter.get();
+  quality_ = splits.quality;
   buildStars(splits);
   if (!uniform_) buildStarCosts();
   buildSplitRecords(splits);

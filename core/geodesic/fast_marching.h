@@ -31,6 +31,7 @@
 #include "core/geodesic/detail/marcher_records.h"
 #include "core/geodesic/detail/unfold.h"
 #include "core/geodesic/metric.h"
+#include "core/geodesic/triangulation_quality.h"
 #include "core/mesh/face_geometry.h"
 #include "core/mesh/surface_point.h"
 #include "core/mesh/tri_mesh.h"
@@ -116,6 +117,9 @@ class FastMarcher {
   /// run, the improved ones for an incremental run.
   const std::vector<int>& acceptedOrder() const { return acceptedVertices_; }
   const TriMesh& mesh() const { return mesh_; }
+  /// assessTriangulation(mesh()), measured while the engine was built (one pass over the faces
+  /// for both); null for an engine on a triangulation with its own lengths.
+  const TriangulationQuality* triangulationQuality() const { return quality_.faces > 0 ? &quality_ : nullptr; }
 
  private:
   using Candidate = detail::Candidate;
@@ -208,6 +212,7 @@ class FastMarcher {
   };
   std::vector<PathEdge> pathEdges_;
   std::vector<Vec3> chordPosition_;  ///< per slot, for the chord bound; empty = off
+  TriangulationQuality quality_;     ///< see triangulationQuality()
   /// Per cell, the slot of its one vertex source; -1 not bounded, -2 no source yet.
   std::vector<int> sourceSlotOfCell_;
 };

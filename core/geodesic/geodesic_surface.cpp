@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -99,11 +100,21 @@ long long exactWindowBudget(const TriangulationQuality& quality, int vertices) {
   return 50000 + static_cast<long long>(vertices * (10.0 + 100.0 * poor));
 }
 
+namespace {
+
+/// The engine on an unrefined input: boundary seeding only (a few vertices, no measurable cost)
+/// and the chord bound.
+void setUpForInput(FastMarcher& marcher, const TriMesh& input) {
+  if (input.topology.boundaryEdges > 0) marcher.setSaddleSeeding(true, /*boundaryOnly=*/true);
+  marcher.setChordBound(true);
+}
+
+}  // namespace
+
 FastMarcher GeodesicSurface::makeMarcher() const {
-  if (!refined) {  // boundary seeding only: a few vertices, no measurable cost
+  if (!refined) {
     FastMarcher marcher(*input, metric);
-    if (input->topology.boundaryEdges > 0) marcher.setSaddleSeeding(true, /*boundaryOnly=*/true);
-    marcher.setChordBound(true);
+    setUpForInput(marcher, *input);
     return marcher;
   }
   FastMarcher marcher(refinement.mesh, refinement.cornerLength, metric);
@@ -176,7 +187,13 @@ Expected<GeodesicDistanceResult> geodesicDistance(const TriMesh& mesh, const std
     metric = std::move(*fromSpeed);
   }
   GeodesicDistanceResult r;
-  r.inputQuality = assessTriangulation(mesh);
+  // The engine on the input measures the triangulation while it is built: on a good mesh, the
+  // common case, the test then costs no second pass over the faces (2.4% of a call on a 1.66M
+  // mesh). Refinement On builds it only on the refined surface.
+  std::optional<FastMarcher> inputEngine;
+  if (params.surface.refinement != SurfaceRefinement::On) inputEngine.emplace(mesh, metric);
+  const TriangulationQuality* measured = inputEngine ? inputEngine->triangulationQuality() : nullptr;
+  r.inputQuality = measured ? *measured : assessTriangulation(mesh);
   Expected<bool> exact = tryExact(mesh, speed, sources, params, r, progress.sub(0.0, 0.3));
   if (!exact) return exact.status();
   if (*exact) return r;
@@ -185,7 +202,8 @@ Expected<GeodesicDistanceResult> geodesicDistance(const TriMesh& mesh, const std
   Expected<GeodesicSurface> surface =
       prepareSurface(mesh, metric, sp, r.inputQuality, mayRefine ? progress.sub(0.0, 0.5) : Progress());
   if (!surface) return surface.status();
-  FastMarcher marcher = surface->makeMarcher();
+  FastMarcher marcher = surface->refined || !inputEngine ? surface->makeMarcher() : std::move(*inputEngine);
+  if (!surface->refined && inputEngine) setUpForInput(marcher, mesh);
   for (size_t i = 0; i < sources.size(); ++i)
     if (Status s = marcher.addSource(sources[i], static_cast<int>(i)); !s) return s;
   Progress marching = surface->refined ? progress.sub(0.5, 1.0) : std::move(progress);

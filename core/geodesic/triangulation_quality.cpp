@@ -30,49 +30,34 @@ double boundingBoxDiagonal(const TriMesh& mesh) {
 
 }  // namespace
 
-TriangulationQuality assessTriangulation(const TriMesh& mesh) {
-  TriangulationQuality q;
-  q.faces = mesh.faceCount();
-  if (q.faces == 0) return q;
-  q.diagonal = boundingBoxDiagonal(mesh);
-  const double longEdge2 = kLongEdgeFraction * kLongEdgeFraction * q.diagonal * q.diagonal;
-  // Angles compared through their signed squared cosines, sign(c) c^2 (increasing with c, so
-  // decreasing with the angle): no square root or arc cosine per corner. The loop is written out
-  // per corner and without branches, since it runs on every call of the geodesic engine.
+TriangulationTally::TriangulationTally(double diagonal) : diagonal_(diagonal) {
+  longEdge2_ = kLongEdgeFraction * kLongEdgeFraction * diagonal * diagonal;
   const auto signedSquare = [](double c) { return c < 0.0 ? -c * c : c * c; };
-  const double sliverBound = signedSquare(std::cos(kSliverAngleDegrees * kPi / 180.0));
-  const double capBound = signedSquare(std::cos(kCapAngleDegrees * kPi / 180.0));
-  // sign(c) c^2 of the corner between u and v (squared lengths nu, nv); a zero-length side: 1.
-  const auto corner = [](const Vec3& u, const Vec3& v, double nu, double nv) {
-    const double dot = u.dot(v), len2 = nu * nv;
-    const double c2 = (dot < 0.0 ? -dot * dot : dot * dot) / len2;
-    return len2 > 0.0 ? std::min(1.0, std::max(-1.0, c2)) : 1.0;
-  };
-  double largest = -1.0, smallest = 1.0;  // of sign(c) c^2 over all corners
-  int slivers = 0, caps = 0, longFaces = 0;
-  for (const Tri& t : mesh.triangles) {
-    const Vec3& p0 = mesh.positions[t[0]];
-    const Vec3& p1 = mesh.positions[t[1]];
-    const Vec3& p2 = mesh.positions[t[2]];
-    const Vec3 a = p1 - p0, b = p2 - p1, c = p0 - p2;
-    const double na = a.squaredNorm(), nb = b.squaredNorm(), nc = c.squaredNorm();
-    const double c0 = corner(a, -c, na, nc), c1 = corner(b, -a, nb, na), c2 = corner(c, -b, nc, nb);
-    const double hi = std::max(c0, std::max(c1, c2)), lo = std::min(c0, std::min(c1, c2));
-    largest = std::max(largest, hi);
-    smallest = std::min(smallest, lo);
-    slivers += hi > sliverBound;
-    caps += lo < capBound;
-    longFaces += std::max(na, std::max(nb, nc)) > longEdge2;
-  }
+  sliverBound_ = signedSquare(std::cos(kSliverAngleDegrees * kPi / 180.0));
+  capBound_ = signedSquare(std::cos(kCapAngleDegrees * kPi / 180.0));
+}
+
+TriangulationQuality TriangulationTally::result() const {
+  TriangulationQuality q;
+  q.faces = faces_;
+  if (faces_ == 0) return q;
+  q.diagonal = diagonal_;
   const auto angleOf = [](double c2) { return std::acos(c2 < 0.0 ? -std::sqrt(-c2) : std::sqrt(c2)) * 180.0 / kPi; };
-  q.smallestAngleDegrees = angleOf(largest);
-  q.largestAngleDegrees = angleOf(smallest);
-  q.sliverShare = static_cast<double>(slivers) / q.faces;
-  q.capShare = static_cast<double>(caps) / q.faces;
-  q.longEdgeShare = static_cast<double>(longFaces) / q.faces;
+  q.smallestAngleDegrees = angleOf(largest_);
+  q.largestAngleDegrees = angleOf(smallest_);
+  q.sliverShare = static_cast<double>(slivers_) / q.faces;
+  q.capShare = static_cast<double>(caps_) / q.faces;
+  q.longEdgeShare = static_cast<double>(longFaces_) / q.faces;
   q.needsRefinement =
       q.sliverShare > kSliverShareBound || q.capShare > kCapShareBound || q.longEdgeShare > kLongShareBound;
   return q;
+}
+
+TriangulationQuality assessTriangulation(const TriMesh& mesh) {
+  if (mesh.faceCount() == 0) return {};
+  TriangulationTally tally(boundingBoxDiagonal(mesh));
+  for (const Tri& t : mesh.triangles) tally.add(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
+  return tally.result();
 }
 
 std::string describe(const TriangulationQuality& q) {

@@ -94,7 +94,13 @@ AcuteSplits findAcuteSplits(const TriMesh& mesh, const std::vector<double>* corn
   const int nc = 3 * mesh.faceCount();
   s.splitOfCorner.assign(nc, -1);
   AcuteSplit split;
+  const bool measured = !length.intrinsic() && mesh.faceCount() > 0;
+  TriangulationTally tally(measured ? mesh.boundingBoxDiagonal() : 0.0);
   for (int f = 0; f < mesh.faceCount(); ++f) {
+    if (measured) {
+      const Tri& t = mesh.triangles[f];
+      tally.add(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
+    }
     for (int k = 0; k < 3; ++k) {  // corner 3f + k: obtuse if its two edges point apart
       const int c = 3 * f + k;
       if (!isObtuse(mesh, length, c)) continue;
@@ -105,6 +111,7 @@ AcuteSplits findAcuteSplits(const TriMesh& mesh, const std::vector<double>* corn
       }
     }
   }
+  if (measured) s.quality = tally.result();
   s.byVertexBegin.assign(mesh.vertexCount() + 1, 0);
   for (const AcuteSplit& sp : s.splits) ++s.byVertexBegin[sp.vertex + 1];
   for (int v = 0; v < mesh.vertexCount(); ++v) s.byVertexBegin[v + 1] += s.byVertexBegin[v];

@@ -19,6 +19,7 @@
 
 #include <vector>
 
+#include "core/geodesic/triangulation_quality.h"
 #include "core/mesh/tri_mesh.h"
 
 namespace gr {
@@ -39,6 +40,9 @@ struct AcuteSplits {
   std::vector<int> byVertexBegin;  ///< CSR: the splits whose R is a given vertex
   std::vector<int> byVertex;
   int obtuseCorners = 0;  ///< corners with an angle above 90 degrees
+  /// assessTriangulation's figures, measured in the same pass over the faces (positions only: not
+  /// for a triangulation with its own lengths, where `quality.faces` stays 0).
+  TriangulationQuality quality;
 };
 
 /// `cornerLength`, if not null, gives per corner c the length of the edge facing c (an intrinsic

@@ -109,8 +109,8 @@ TEST(BadTriangles, NeedlesAndZeroAreaFacesStayWithinTwiceTheGoodError) {
 // mean error within 2x of the mean error on the good meshes (fandisk, bunny00, armadillo), well
 // ahead of Dijkstra and no worse than vcglib, cheese.off included (genus 133, holes in flat faces
 // with vertices only on their rims: 4.98% on the input; by default exact, issue 17). The fronts
-// alone (ExactPropagation::Never: what the remeshing runs; Auto refines each of these meshes) stay
-// within issue 17's 1% and no worse than vcglib there (cheese: 0.87%).
+// alone (ExactPropagation::Never: what the remeshing runs; Auto refines each of these meshes) are
+// held to the same bounds, except cheese's 2x (0.87%: within issue 17's 1%).
 TEST(BadTriangles, DataSetSliverMeshes) {
   double goodSum = 0.0;
   for (const char* name : {"fandisk.off", "bunny00.off", "armadillo.off"}) {
@@ -146,6 +146,11 @@ TEST(BadTriangles, DataSetSliverMeshes) {
     EXPECT_LE(e.meanRelative, eVcg.meanRelative);
     EXPECT_LE(eFronts.meanRelative, 0.01);
     EXPECT_LE(eFronts.meanRelative, eVcg.meanRelative);
+    EXPECT_LE(eFronts.meanRelative, eDijkstra.meanRelative / 3);
+    // cheese.off's fronts: 0.87%, under issue 17's 1% but above twice the scans' mean (0.65%).
+    if (std::string(name) != "cheese.off") {
+      EXPECT_LE(eFronts.meanRelative, 2.0 * good);
+    }
   }
 }
 

@@ -199,14 +199,16 @@ Expected<GeodesicDistanceResult> geodesicDistance(const TriMesh& mesh, const std
   if (*exact) return r;
   const GeodesicSurfaceParams& sp = params.surface;
   const bool mayRefine = sp.refinement != SurfaceRefinement::Off;
+  // The progress goes on from where an exact run that ran out of windows left it.
+  const double start = r.windows > 0 ? 0.3 : 0.0, middle = start + 0.5 * (1.0 - start);
   Expected<GeodesicSurface> surface =
-      prepareSurface(mesh, metric, sp, r.inputQuality, mayRefine ? progress.sub(0.0, 0.5) : Progress());
+      prepareSurface(mesh, metric, sp, r.inputQuality, mayRefine ? progress.sub(start, middle) : Progress());
   if (!surface) return surface.status();
   FastMarcher marcher = surface->refined || !inputEngine ? surface->makeMarcher() : std::move(*inputEngine);
   if (!surface->refined && inputEngine) setUpForInput(marcher, mesh);
   for (size_t i = 0; i < sources.size(); ++i)
     if (Status s = marcher.addSource(sources[i], static_cast<int>(i)); !s) return s;
-  Progress marching = surface->refined ? progress.sub(0.5, 1.0) : std::move(progress);
+  Progress marching = surface->refined ? progress.sub(middle, 1.0) : progress.sub(start, 1.0);
   if (Status s = marcher.propagate(params.marching, std::move(marching)); !s) return s;
   r.field = fieldAtInputVertices(marcher, mesh.vertexCount());
   r.refined = surface->refined;

@@ -204,8 +204,14 @@ TEST(ExactGeodesic, GeodesicDistanceUsesItWhereItIsCheaper) {
     EXPECT_EQ(r->field.distance, exactFrom(cad.mesh, 0));
   }
   const TriMesh lion = test::loadRealMesh("lion.off");
-  const Expected<GeodesicDistanceResult> scan = geodesicDistance(lion, {}, {0});
+  std::vector<int> percents;  // the progress goes on from the exact run to the refinement and fronts
+  const Expected<GeodesicDistanceResult> scan = geodesicDistance(lion, {}, {0}, {}, Progress([&](int p, const char*) {
+                                                                   percents.push_back(p);
+                                                                   return true;
+                                                                 }));
   ASSERT_TRUE(scan);
+  EXPECT_TRUE(std::is_sorted(percents.begin(), percents.end()));
+  EXPECT_GE(percents.back(), 65);  // into the fronts' share (65-100%)
   EXPECT_FALSE(scan->exact);
   EXPECT_TRUE(scan->exactOverBudget);
   EXPECT_GT(scan->windows, exactWindowBudget(scan->inputQuality, lion.vertexCount()));

@@ -306,13 +306,7 @@ ExactGeodesicResult WindowPropagation::result() {
 
 Expected<ExactGeodesicResult> exactGeodesicDistance(const TriMesh& mesh, const std::vector<int>& sources,
                                                     const ExactGeodesicParams& params, Progress progress) {
-  if (sources.empty()) return invalidInput("no source vertices were given");
-  for (int s : sources)
-    if (s < 0 || s >= mesh.vertexCount())
-      return invalidInput("source vertex " + std::to_string(s) + " does not exist (the mesh has " +
-                          std::to_string(mesh.vertexCount()) + " vertices)");
-  if (std::isnan(params.maxDistance) || params.maxDistance < 0.0)
-    return invalidInput("the distance limit must be >= 0, got " + std::to_string(params.maxDistance));
+  if (Status s = checkSourcesAndLimit(mesh, sources, params.maxDistance); !s) return s;
   if (!mesh.topology.isManifold())
     return nonManifold("exact geodesics need a manifold mesh: " + mesh.topology.nonManifoldCounts());
   for (int c = 0; c < 3 * mesh.faceCount(); ++c)

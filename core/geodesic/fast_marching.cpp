@@ -495,6 +495,17 @@ void FastMarcher::endRun() {
   runOpen_ = false;
 }
 
+Status checkSourcesAndLimit(const TriMesh& mesh, const std::vector<int>& sources, double maxDistance) {
+  if (sources.empty()) return invalidInput("no source vertices were given");
+  for (int s : sources)
+    if (s < 0 || s >= mesh.vertexCount())
+      return invalidInput("source vertex " + std::to_string(s) + " does not exist (the mesh has " +
+                          std::to_string(mesh.vertexCount()) + " vertices)");
+  if (std::isnan(maxDistance) || maxDistance < 0.0)
+    return invalidInput("the distance limit must be >= 0, got " + std::to_string(maxDistance));
+  return Status::ok();
+}
+
 Expected<FastMarchingResult> fastMarching(const TriMesh& mesh, const Metric& metric, const std::vector<int>& sources,
                                           const FastMarchingParams& params, Progress progress) {
   if (sources.empty()) return invalidInput("no source vertices were given");

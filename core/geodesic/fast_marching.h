@@ -61,6 +61,10 @@ struct FastMarchingResult {
   int reachedCount() const { return static_cast<int>(acceptedOrder.size()); }
 };
 
+/// The checks every distance entry point makes: at least one source, each a vertex of `mesh`, and a
+/// distance limit >= 0 (+inf = none). InvalidInput with the reason otherwise.
+Status checkSourcesAndLimit(const TriMesh& mesh, const std::vector<int>& sources, double maxDistance);
+
 /// Reusable fast-marching engine: owns the heap and per-vertex buffers for one mesh and metric.
 class FastMarcher {
  public:

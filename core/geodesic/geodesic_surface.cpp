@@ -19,13 +19,7 @@ bool wantsRefinement(const GeodesicSurfaceParams& params, const TriangulationQua
 }
 
 Status checkDistanceInput(const TriMesh& mesh, const std::vector<int>& sources, const FastMarchingParams& params) {
-  if (sources.empty()) return invalidInput("no source vertices were given");
-  for (int s : sources)
-    if (s < 0 || s >= mesh.vertexCount())
-      return invalidInput("source vertex " + std::to_string(s) + " does not exist (the mesh has " +
-                          std::to_string(mesh.vertexCount()) + " vertices)");
-  if (std::isnan(params.maxDistance) || params.maxDistance < 0.0)
-    return invalidInput("the distance limit must be >= 0, got " + std::to_string(params.maxDistance));
+  if (Status s = checkSourcesAndLimit(mesh, sources, params.maxDistance); !s) return s;
   for (int t : params.targets)
     if (t < 0 || t >= mesh.vertexCount()) return invalidInput("target vertex " + std::to_string(t) + " does not exist");
   return Status::ok();

@@ -150,6 +150,27 @@ void FastMarcher::reset() {
   runOpen_ = false;
 }
 
+Status FastMarcher::startFromBound(const std::vector<double>& bound, const std::vector<int>& cell) {
+  const int nv = mesh_.vertexCount();
+  if (static_cast<int>(bound.size()) != nv || static_cast<int>(cell.size()) != nv)
+    return invalidInput("fast marching: a bound needs one value and one cell per vertex");
+  for (int v = 0; v < nv; ++v)
+    if (!(bound[v] >= 0.0))
+      return invalidInput("fast marching: a bound is negative or NaN at vertex " + std::to_string(v));
+  reset();
+  ++run_;  // the bound's values are those of a run that accepted them
+  for (int slot = 0; slot < nv; ++slot) {
+    const int v = vertexOf_[slot];
+    const double u = bound[v];
+    if (u == kUnreached) continue;
+    node_[slot] = Node{u, run_, cell[v]};
+    touched_.push_back(slot);
+    U_[v] = u;
+    cell_[v] = cell[v];
+  }
+  return Status::ok();
+}
+
 void FastMarcher::beginRun() {
   if (runOpen_) return;
   runOpen_ = true;

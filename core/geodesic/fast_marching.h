@@ -79,6 +79,15 @@ class FastMarcher {
 
   /// Forgets all sources and distances. Cost: O(vertices ever reached since the last reset).
   void reset();
+  /// Forgets all sources and distances, then starts from upper bounds: every vertex gets
+  /// U = bound[v] in cell[v] (vertex numbers) as if an earlier run had accepted it (+inf: not
+  /// reached). Sources added then propagate only where they go below these values, so the field
+  /// of sources that moved a little from those of a known field (Lloyd's from one iteration to
+  /// the next) costs their cells and the band where the bound is loose, one compact front at a
+  /// time, instead of one front over the whole mesh from all of them at once. Where a bound is
+  /// below the new sources' field it stays. InvalidInput on sizes that differ from the mesh's or
+  /// a negative or NaN bound.
+  Status startFromBound(const std::vector<double>& bound, const std::vector<int>& cell);
   /// Adds vertex `v` as a source (U = 0) in Voronoi cell `cell`. InvalidInput if v is out of range. A
   /// vertex that already has U = 0 keeps its cell.
   Status addSource(int v, int cell);

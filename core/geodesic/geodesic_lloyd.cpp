@@ -16,6 +16,12 @@ constexpr double kStepTolerance = 0.01;
 constexpr double kSnapToVertex = 1e-9;
 /// Halvings of a step that does not lower the cell's energy before its descent ends (each costs a front).
 constexpr int kHalvings = 1;
+/// The new cells come from the accepted ones (LloydRun::boundedFronts) when the cells have at
+/// least this many vertices on average. In smaller cells a source's first rings, which get
+/// straight-line distances, reach past its cell: each front alone then lowers its neighbours'
+/// values, which one front from all seeds, having accepted them, keeps (bunny00, the first
+/// iteration's energies apart by 2e-3 at 10 vertices per cell, 1e-3 at 20, 6e-5 at 40 and 75).
+constexpr int kBoundedFrontsCellVertices = 40;
 /// Rounds of re-placing the seeds of vanished cells before giving up on that iteration's cells.
 constexpr int kReseedRounds = 8;
 
@@ -32,6 +38,13 @@ std::vector<Vec3> vertexNormals(const TriMesh& mesh) {
   return normal;
 }
 
+double meanP(const Metric& metric, int vertexCount) {
+  if (metric.isUniform() || vertexCount == 0) return 1.0;
+  double sum = 0.0;
+  for (double p : metric.P) sum += p;
+  return sum / vertexCount;
+}
+
 /// One run of Lloyd iterations: the mesh's per-vertex data, the cells of the current seeds, and
 /// the descent of each cell.
 class LloydRun {
@@ -43,11 +56,24 @@ class LloydRun {
         params_(params),
         mass_(lloydVertexMass(mesh, metric, params.metricArea)),
         normal_(vertexNormals(mesh)),
-        region_(mesh.vertexCount(), -1) {}
+        region_(mesh.vertexCount(), -1),
+        discretisationMargin_(0.5 * mesh.meanEdgeLength() * meanP(metric, mesh.vertexCount())) {}
 
   /// The cells and field of `seeds` (seeds of vanished cells are re-placed, counted in `reseeded`);
-  /// the energy sum_x m_x U(x)^2.
-  Expected<double> voronoi(std::vector<SurfacePoint>& seeds, int* reseeded);
+  /// the energy sum_x m_x U(x)^2. `nearAccepted`: the seeds are the accepted ones moved (one
+  /// index each), so their field may start from the accepted field (boundedFronts).
+  Expected<double> voronoi(std::vector<SurfacePoint>& seeds, int* reseeded, bool nearAccepted = false);
+  /// The same from the field the marcher holds (LloydParams::marcherHoldsSeedsField), if every
+  /// seed has a cell there; else from a front.
+  Expected<double> voronoiFromMarcher(std::vector<SurfacePoint>& seeds, int* reseeded);
+  /// The energy sum_x m_x U(x)^2 of the current field.
+  double energy() const;
+  /// Keeps the current seeds and field as the accepted ones, from which the next are computed.
+  void accept(const std::vector<SurfacePoint>& seeds) {
+    acceptedSeeds_ = seeds;
+    acceptedDistance_ = distance_;
+    acceptedCell_ = cell_;
+  }
   /// Moves `seed` (of cell i) down the cell's energy; descent steps at most params_.descentSteps.
   Status descend(int i, SurfacePoint& seed);
   /// The point of cell i's faces nearest to `from` + omega (`to` - `from`).
@@ -60,6 +86,14 @@ class LloydRun {
 
  private:
   Status runFrom(const SurfacePoint& seed, int seedIndex);
+  /// The field of `seeds`, the accepted seeds moved, from the accepted field: each vertex starts at
+  /// an upper bound of its distance to its accepted cell's moved seed (its accepted distance plus
+  /// a bound on how far that seed moved, plus a margin for the discretisation), then each seed's
+  /// front runs alone where it goes below (FastMarcher::startFromBound).
+  Status boundedFronts(const std::vector<SurfacePoint>& seeds);
+  /// An upper bound on how far (in the metric) accepted seed i moved to `to`: through a vertex of
+  /// `to`'s face (or `to` itself) in accepted cell i, then straight; +inf if there is none.
+  double moveBound(int i, const SurfacePoint& to) const;
   /// Cell i's energy from the field d (the cells' field or a run inside the cell); +inf if a
   /// vertex of the cell reached before (count `expectReached`, -1 = any) is not reached.
   double cellEnergy(const std::vector<double>& d, int i, int expectReached, int* reached) const;
@@ -82,15 +116,72 @@ class LloydRun {
   std::vector<double> cellArea_;             ///< per cell, its mass
   std::vector<int> region_;                  ///< per vertex, the stamp of the last cell it is near
   int stamp_ = 0;
+  /// Added to each bound of boundedFronts: half a mean edge length (in the metric's mean P), so
+  /// that a moved seed's front goes below its own cell's bound though its discretisation differs
+  /// a little (bunny00, 500 seeds: the fields then equal the multi-source fronts' to 1e-16 after
+  /// the first iteration; with no margin 1e-4 of the energy apart).
+  double discretisationMargin_;
+  std::vector<SurfacePoint> acceptedSeeds_;  ///< see accept()
+  std::vector<double> acceptedDistance_;
+  std::vector<int> acceptedCell_;
+  std::vector<double> bound_;  ///< boundedFronts' per-vertex bound (kept to reuse its memory)
 };
 
-Expected<double> LloydRun::voronoi(std::vector<SurfacePoint>& seeds, int* reseeded) {
+double LloydRun::moveBound(int i, const SurfacePoint& to) const {
+  const Vec3 p = to.position(mesh_);
+  const auto through = [&](int x, double pMax) {
+    if (acceptedCell_[x] != i) return kUnreached;
+    return acceptedDistance_[x] + pMax * (mesh_.positions[x] - p).norm();
+  };
+  if (to.vertex >= 0) return through(to.vertex, 0.0);
+  const Tri& t = mesh_.triangles[to.face];
+  double pMax = 1.0;
+  if (!metric_.isUniform()) pMax = std::max({metric_.P[t[0]], metric_.P[t[1]], metric_.P[t[2]]});
+  return std::min({through(t[0], pMax), through(t[1], pMax), through(t[2], pMax)});
+}
+
+Status LloydRun::boundedFronts(const std::vector<SurfacePoint>& seeds) {
+  const int n = static_cast<int>(seeds.size()), nv = mesh_.vertexCount();
+  std::vector<double> slack(n);
+  for (int i = 0; i < n; ++i) slack[i] = moveBound(i, seeds[i]) + discretisationMargin_;
+  bound_.resize(nv);
+  for (int v = 0; v < nv; ++v) {
+    const int c = acceptedCell_[v];
+    bound_[v] = c >= 0 ? acceptedDistance_[v] + slack[c] : kUnreached;
+  }
+  if (Status s = marcher_.startFromBound(bound_, acceptedCell_); !s) return s;
+  for (int i = 0; i < n; ++i) {
+    if (Status s = marcher_.addSource(seeds[i], i); !s) return s;
+    if (Status s = marcher_.propagate(); !s) return s;
+  }
+  return Status::ok();
+}
+
+Expected<double> LloydRun::voronoiFromMarcher(std::vector<SurfacePoint>& seeds, int* reseeded) {
+  const int n = static_cast<int>(seeds.size());
+  distance_ = marcher_.distance();
+  cell_ = marcher_.cell();
+  for (int c : cell_)
+    if (c >= n) return voronoi(seeds, reseeded);
+  buildCellLists(n);
+  for (int i = 0; i < n; ++i)
+    if (vertexBegin_[i + 1] == vertexBegin_[i]) return voronoi(seeds, reseeded);
+  return energy();
+}
+
+Expected<double> LloydRun::voronoi(std::vector<SurfacePoint>& seeds, int* reseeded, bool nearAccepted) {
   const int n = static_cast<int>(seeds.size());
   for (int round = 0;; ++round) {
-    marcher_.reset();
-    for (int i = 0; i < n; ++i)
-      if (Status s = marcher_.addSource(seeds[i], i); !s) return s;
-    if (Status s = marcher_.propagate(); !s) return s;
+    const bool bounded = nearAccepted && static_cast<int>(acceptedSeeds_.size()) == n &&
+                         mesh_.vertexCount() >= kBoundedFrontsCellVertices * n;
+    if (round == 0 && bounded) {
+      if (Status s = boundedFronts(seeds); !s) return s;
+    } else {
+      marcher_.reset();
+      for (int i = 0; i < n; ++i)
+        if (Status s = marcher_.addSource(seeds[i], i); !s) return s;
+      if (Status s = marcher_.propagate(); !s) return s;
+    }
     distance_ = marcher_.distance();
     cell_ = marcher_.cell();
     buildCellLists(n);
@@ -110,10 +201,14 @@ Expected<double> LloydRun::voronoi(std::vector<SurfacePoint>& seeds, int* reseed
     for (size_t k = 0; k < empty.size() && k < order.size(); ++k) seeds[empty[k]] = SurfacePoint::atVertex(order[k]);
     *reseeded += static_cast<int>(empty.size());
   }
-  double energy = 0.0;
+  return energy();
+}
+
+double LloydRun::energy() const {
+  double e = 0.0;
   for (int v = 0; v < mesh_.vertexCount(); ++v)
-    if (std::isfinite(distance_[v])) energy += mass_[v] * distance_[v] * distance_[v];
-  return energy;
+    if (std::isfinite(distance_[v])) e += mass_[v] * distance_[v] * distance_[v];
+  return e;
 }
 
 void LloydRun::buildCellLists(int cells) {
@@ -198,6 +293,11 @@ SurfacePoint LloydRun::nearestOnCell(int i, const Vec3& p) const {
     const Vec3& a = mesh_.positions[t[0]];
     const Vec3& b = mesh_.positions[t[1]];
     const Vec3& c = mesh_.positions[t[2]];
+    // The face lies in the ball around a through its farthest vertex: skipped when even that
+    // ball is farther than the best so far.
+    const double reach = std::sqrt(std::max((b - a).squaredNorm(), (c - a).squaredNorm()));
+    const double toA = (p - a).norm() - reach;
+    if (toA > 0.0 && toA * toA >= best) continue;
     const Vec3 bary = closestPointBarycentric(p, a, b, c);
     const double dist = (bary[0] * a + bary[1] * b + bary[2] * c - p).squaredNorm();
     if (dist < best) {
@@ -301,8 +401,10 @@ Expected<LloydResult> geodesicLloyd(const TriMesh& mesh, const Metric& metric, F
   if (Status s = checkLloydInput(mesh, metric, marcher, seeds, params); !s) return s;
   LloydRun run(mesh, metric, marcher, params);
   LloydResult result;
-  Expected<double> energy = run.voronoi(seeds, &result.reseeded);
+  Expected<double> energy = params.marcherHoldsSeedsField ? run.voronoiFromMarcher(seeds, &result.reseeded)
+                                                          : run.voronoi(seeds, &result.reseeded);
   if (!energy) return energy.status();
+  run.accept(seeds);
   result.energy.push_back(*energy);
   const int n = static_cast<int>(seeds.size());
   std::vector<char> fixed(n, 0);
@@ -322,29 +424,30 @@ Expected<LloydResult> geodesicLloyd(const TriMesh& mesh, const Metric& metric, F
       for (int i = 0; i < n; ++i)
         if (!fixed[i]) moved[i] = run.beyond(i, seeds[i], centres[i], params.overRelaxation);
     int reseeded = 0;
-    Expected<double> next = run.voronoi(moved, &reseeded);
+    Expected<double> next = run.voronoi(moved, &reseeded, true);
     if (!next) return next.status();
     const double previous = result.energy.back();
     if (*next > previous && params.overRelaxation > 1.0) {  // redone without over-relaxation
       moved = centres;
       reseeded = 0;
-      next = run.voronoi(moved, &reseeded);
+      next = run.voronoi(moved, &reseeded, true);
       if (!next) return next.status();
     }
     if (*next > previous) {  // undone: back to the last accepted seeds' cells
-      Expected<double> back = run.voronoi(seeds, &result.reseeded);
+      Expected<double> back = run.voronoi(seeds, &result.reseeded, true);  // the marcher holds their field
       if (!back) return back.status();
       result.undone = true;
       break;
     }
     seeds = std::move(moved);
+    run.accept(seeds);
     result.reseeded += reseeded;
     result.energy.push_back(*next);
     ++result.iterations;
     if (previous - *next < params.tolerance * previous) break;
   }
   if (params.vertexSeeds && moveSeedsToVertices(mesh, seeds)) {
-    Expected<double> snapped = run.voronoi(seeds, &result.reseeded);
+    Expected<double> snapped = run.voronoi(seeds, &result.reseeded, true);
     if (!snapped) return snapped.status();
     result.energy.push_back(*snapped);
   }

@@ -27,8 +27,16 @@
 // from one accepted iteration to the next (an iteration that would raise it is undone and ends the
 // run); every seed keeps a cell (a seed whose cell vanished goes to the vertex farthest from all
 // seeds, counted in `reseeded`).
-// Cost per iteration: one front over the mesh, plus per cell at most 3 fronts per descent step
-// over the cell and its ring: about 1 + 2 * (descent steps taken) fronts over the whole mesh.
+// Cost per iteration: the new cells, plus per cell at most 3 fronts per descent step over the
+// cell and its ring: about 1 + 2 * (descent steps taken) fronts over the whole mesh. With cells
+// of 40 vertices or more on average, the new cells come from the last accepted ones: every vertex starts at an upper bound of its distance
+// to its cell's moved seed (its distance to the old seed plus how far that seed moved, plus half
+// an edge), and each seed's front then runs alone where it goes below that
+// (FastMarcher::startFromBound). That visits about 1.1-1.3 times the vertices of one front from
+// all seeds, but each front stays in its cell's memory: a front from 1,000 seeds jumps across
+// the whole mesh between heap pops (armadillo_sub3, 1.66M vertices: 10 iterations 18.4 -> 10 s).
+// The fields agree with one front from all seeds (bunny00, 500 seeds: the same energy to 1e-16
+// after the first iteration).
 #pragma once
 
 #include <vector>
@@ -60,6 +68,10 @@ struct LloydParams {
   /// barycentric coordinate, and the cells of those seeds computed (callers that need vertex
   /// seeds: a labelling of faces by their vertices, samples on a refined surface).
   bool vertexSeeds = false;
+  /// The marcher already holds the field of exactly `seeds`, seed i in cell i (as
+  /// farthestPointSampling leaves it): the first cells are read from it instead of a front over
+  /// the whole mesh.
+  bool marcherHoldsSeedsField = false;
   /// Seeds on boundary vertices stay where they are (a remeshing samples its boundaries first so
   /// that they stay boundaries).
   bool keepBoundarySeeds = false;

@@ -334,7 +334,8 @@ Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vect
   // A seed on a vertex (U = 0 there) owns every face around it in the labelling: no region is
   // left without a face.
   lloyd.vertexSeeds = true;
-  std::vector<int> cell;  // of the input's vertices, in the last round
+  lloyd.marcherHoldsSeedsField = true;  // the sampling's
+  std::vector<int> cell;                // of the input's vertices, in the last round
   for (int round = 0;; ++round) {
     Expected<LloydResult> relaxed = geodesicLloyd(
         surface->mesh(), surface->metric, marcher, seeds, lloyd,
@@ -361,6 +362,7 @@ Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vect
                           " regions still not disks after " + std::to_string(round + 1) +
                           " rounds); it may be too coarse for its topology: ask for more regions");
     out.regionsAdded += added;
+    lloyd.marcherHoldsSeedsField = false;
     lloyd.iterations = std::max(params.iterationsAfterAdding, 1);
   }
   out.regions = static_cast<int>(seeds.size());

@@ -176,6 +176,32 @@ void expectEnergyFalls(int seedCount) {
 TEST(GeodesicLloyd, EnergyNeverRisesAndEndsNearTheHexagonBoundBunny100) { expectEnergyFalls(100); }
 TEST(GeodesicLloyd, EnergyNeverRisesAndEndsNearTheHexagonBoundBunny500) { expectEnergyFalls(500); }
 
+// The first cells read from the sampling's field (LloydParams::marcherHoldsSeedsField) are those
+// of a front from the samples: the same energies and cells as a run that starts with that front.
+TEST(GeodesicLloyd, StartsFromTheSamplingsFieldAsFromItsOwnFront) {
+  const TriMesh m = test::loadRealMesh("bunny00.off");
+  FastMarcher marcher(m, Metric::uniform());
+  FpsParams fps;
+  fps.targetCount = 200;
+  const Expected<FpsResult> samples = farthestPointSampling(marcher, fps);
+  ASSERT_TRUE(samples);
+  LloydParams params;
+  params.iterations = 4;
+  params.tolerance = 0.0;
+  params.marcherHoldsSeedsField = true;
+  const Expected<LloydResult> fromSampling = geodesicLloyd(m, Metric::uniform(), marcher, samples->origin, params);
+  params.marcherHoldsSeedsField = false;
+  FastMarcher fresh(m, Metric::uniform());
+  const Expected<LloydResult> fromFront = geodesicLloyd(m, Metric::uniform(), fresh, samples->origin, params);
+  ASSERT_TRUE(fromSampling && fromFront);
+  ASSERT_EQ(fromSampling->energy.size(), fromFront->energy.size());
+  for (size_t k = 0; k < fromFront->energy.size(); ++k)
+    EXPECT_NEAR(fromSampling->energy[k], fromFront->energy[k], 1e-12 * fromFront->energy[k]) << "iteration " << k;
+  int differ = 0;
+  for (int v = 0; v < m.vertexCount(); ++v) differ += fromSampling->cell[v] != fromFront->cell[v];
+  EXPECT_LE(differ, m.vertexCount() / 1000);
+}
+
 TEST(GeodesicLloyd, RefusesBadInput) {
   const TriMesh m = test::planeGrid(4);
   FastMarcher marcher(m, Metric::uniform());

@@ -1,6 +1,7 @@
 #include "core/segment/boundary_snapping.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -50,7 +51,7 @@ class MinCut {
   }
   void run(int source, int sink) {
     while (augment(source, sink)) {}
-    reached_ = reach(source);
+    reach(source);
   }
   bool onSourceSide(int v) const { return reached_[v] != 0; }
 
@@ -64,21 +65,22 @@ class MinCut {
     edges_.push_back({b, first_[a], capacity});
     first_[a] = static_cast<int>(edges_.size()) - 1;
   }
-  std::vector<char> reach(int source) {
-    std::vector<char> seen(first_.size(), 0);
-    std::vector<int> queue{source};
-    seen[source] = 1;
-    for (size_t i = 0; i < queue.size(); ++i)
-      for (int e = first_[queue[i]]; e >= 0; e = edges_[e].next)
-        if (edges_[e].residual > kEpsilon && !seen[edges_[e].to]) {
-          seen[edges_[e].to] = 1;
+  /// Marks in reached_ what the residual graph reaches from `source` (parentEdge_: the BFS tree).
+  void reach(int source) {
+    reached_.assign(first_.size(), 0);
+    queue_.assign(1, source);
+    reached_[source] = 1;
+    for (size_t i = 0; i < queue_.size(); ++i)
+      for (int e = first_[queue_[i]]; e >= 0; e = edges_[e].next)
+        if (edges_[e].residual > kEpsilon && !reached_[edges_[e].to]) {
+          reached_[edges_[e].to] = 1;
           parentEdge_[edges_[e].to] = e;
-          queue.push_back(edges_[e].to);
+          queue_.push_back(edges_[e].to);
         }
-    return seen;
   }
   bool augment(int source, int sink) {
-    if (!reach(source)[sink]) return false;
+    reach(source);
+    if (!reached_[sink]) return false;
     double flow = edges_[parentEdge_[sink]].residual;
     for (int v = sink; v != source; v = edges_[parentEdge_[v] ^ 1].to)
       flow = std::min(flow, edges_[parentEdge_[v]].residual);
@@ -92,27 +94,40 @@ class MinCut {
   std::vector<Edge> edges_;
   std::vector<int> parentEdge_;
   std::vector<char> reached_;
+  std::vector<int> queue_;
 };
 
-/// The faces labelled a or b with a vertex in cell a and one in cell b, and their neighbours
-/// labelled a or b: where the boundary between a and b may move. Marks them in `stamp`.
-std::vector<int> bandOf(const TriMesh& mesh, const std::vector<int>& cell, const std::vector<int>& region,
-                        std::pair<int, int> ab, const std::vector<int>& candidates, std::vector<int>& stamp, int mark) {
+/// Per pair of cells (a < b), the faces with a vertex in each, as (a, b, face) sorted.
+std::vector<std::array<int, 3>> straddlingFaces(const TriMesh& mesh, const std::vector<int>& cell) {
+  std::vector<std::array<int, 3>> out;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const int a = cell[t[k]], b = cell[t[(k + 1) % 3]];
+      if (a != b && a >= 0 && b >= 0) out.push_back({std::min(a, b), std::max(a, b), f});
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());  // a face of three cells: each pair once
+  return out;
+}
+
+/// The faces labelled a or b with a vertex in cell a and one in cell b ([pairFirst, pairLast):
+/// the pair's straddling faces), and their neighbours labelled a or b: where the boundary between a and b may move.
+/// Marks them in `stamp`.
+std::vector<int> bandOf(const TriMesh& mesh, const std::vector<int>& region, std::pair<int, int> ab,
+                        const std::array<int, 3>* pairFirst, const std::array<int, 3>* pairLast,
+                        std::vector<int>& stamp, int mark) {
   const auto [a, b] = ab;
   std::vector<int> band;
-  for (int f : candidates) {
+  for (const std::array<int, 3>* s = pairFirst; s != pairLast; ++s) {
+    const int f = (*s)[2];
     if (stamp[f] == mark || (region[f] != a && region[f] != b)) continue;
-    bool inA = false, inB = false;
-    for (int v : mesh.triangles[f]) {
-      inA = inA || cell[v] == a;
-      inB = inB || cell[v] == b;
-    }
-    if (!inA || !inB) continue;
     stamp[f] = mark;
     band.push_back(f);
   }
-  const size_t straddling = band.size();
-  for (size_t i = 0; i < straddling; ++i)
+  const size_t across = band.size();
+  for (size_t i = 0; i < across; ++i)
     for (int c = 3 * band[i]; c < 3 * band[i] + 3; ++c) {
       const int o = mesh.oppositeCorner[c];
       if (o < 0) continue;
@@ -192,17 +207,22 @@ int snapBoundariesToSharpEdges(const TriMesh& mesh, const std::vector<int>& cell
   for (int f = 0; f < mesh.faceCount(); ++f) facesOfRegion[faceRegion[f]].push_back(f);
   RegionTopologyCounter topology(mesh);
   std::vector<int> stamp(mesh.faceCount(), -1), node(mesh.faceCount(), -1), candidates, labels;
+  const std::vector<std::array<int, 3>> straddling = straddlingFaces(mesh, cell);
   int moved = 0, mark = 0;
   for (const std::pair<int, int>& ab : neighbouringRegions(mesh, faceRegion)) {
-    std::vector<int>& a = facesOfRegion[ab.first];
-    std::vector<int>& b = facesOfRegion[ab.second];
-    candidates.assign(a.begin(), a.end());
-    candidates.insert(candidates.end(), b.begin(), b.end());
-    const std::vector<int> band = bandOf(mesh, cell, faceRegion, ab, candidates, stamp, ++mark);
+    const std::array<int, 3> lo{ab.first, ab.second, -1}, hi{ab.first, ab.second, mesh.faceCount()};
+    const auto first = std::lower_bound(straddling.begin(), straddling.end(), lo);
+    const auto last = std::upper_bound(first, straddling.end(), hi);
+    const std::vector<int> band = bandOf(mesh, faceRegion, ab, straddling.data() + (first - straddling.begin()),
+                                         straddling.data() + (last - straddling.begin()), stamp, ++mark);
     labels.clear();
     for (int f : band) labels.push_back(faceRegion[f]);
     const int changed = cutBand(mesh, weighted, faceRegion, ab, band, node, stamp, mark);
     if (changed == 0) continue;
+    std::vector<int>& a = facesOfRegion[ab.first];
+    std::vector<int>& b = facesOfRegion[ab.second];
+    candidates.assign(a.begin(), a.end());
+    candidates.insert(candidates.end(), b.begin(), b.end());
     a.clear();
     b.clear();
     for (int f : candidates) (faceRegion[f] == ab.first ? a : b).push_back(f);

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <queue>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/base/format.h"
 #include "core/base/statistics.h"
@@ -98,6 +102,34 @@ Expected<SpeedFieldResult> speedFromField(const TriMesh& mesh, const std::vector
   if (!metric) return metric.status();
   r.metric = std::move(*metric);
   return r;
+}
+
+int limitSpeedGrowth(const TriMesh& mesh, double growth, SpeedFieldResult& speed) {
+  std::vector<double>& F = speed.speed;
+  const int nv = mesh.vertexCount();
+  if (!(growth > 0.0) || speed.metric.isUniform() || static_cast<int>(F.size()) != nv) return 0;
+  using Item = std::pair<double, int>;  // (F, vertex), smallest first
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+  for (int v = 0; v < nv; ++v) heap.push({F[v], v});
+  std::vector<char> done(nv, 0), lowered(nv, 0);
+  while (!heap.empty()) {
+    const auto [fv, v] = heap.top();
+    heap.pop();
+    if (done[v] || fv > F[v]) continue;
+    done[v] = 1;
+    for (const int* c = mesh.cornersBegin(v); c != mesh.cornersEnd(v); ++c)
+      for (const int w : {mesh.vertex(TriMesh::next(*c)), mesh.vertex(TriMesh::prev(*c))}) {
+        const double lower = fv + growth * (mesh.positions[w] - mesh.positions[v]).norm();
+        if (lower < F[w]) {
+          F[w] = lower;
+          lowered[w] = 1;
+          heap.push({lower, w});
+        }
+      }
+  }
+  speed.speedMax = *std::max_element(F.begin(), F.end());
+  for (int v = 0; v < nv; ++v) speed.metric.P[v] = 1.0 / F[v];
+  return static_cast<int>(std::count(lowered.begin(), lowered.end(), 1));
 }
 
 }  // namespace gr

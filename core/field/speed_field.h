@@ -77,4 +77,13 @@ struct SpeedFieldResult {
 Expected<SpeedFieldResult> speedFromField(const TriMesh& mesh, const std::vector<double>& field,
                                           const SpeedFieldParams& params = {});
 
+/// Gradation: lowers the speed (the local spacing of an adaptive sampling goes as F) so that it
+/// grows by at most `growth` per unit of length along the mesh's edges,
+/// F'(x) = min over y of F(y) + growth * d(x, y), d the shortest edge path (Dijkstra from every
+/// vertex at once, O(E log V)). A spacing that changes fast over a short distance (a sharp edge's
+/// dense band beside a flat face) cannot be triangulated with good angles; a bounded growth can.
+/// Updates speedMax and the metric (P = 1/F); returns the vertices whose speed was lowered.
+/// `growth` <= 0 or a uniform metric: nothing changes.
+int limitSpeedGrowth(const TriMesh& mesh, double growth, SpeedFieldResult& speed);
+
 }  // namespace gr

@@ -80,14 +80,16 @@ Expected<OrientedSurface> orientedSurface(const TriMesh& input) {
 /// refined), or the oriented input subdivided `params.refinement` times (`fine`).
 struct FrontSurface {
   GeodesicSurface geodesic;
-  std::optional<Subdivision> fine;  ///< when not refined
-  Metric fineMetric;                ///< on fine's vertices
+  std::optional<Subdivision> fine;        ///< when not refined
+  Metric fineMetric;                      ///< on fine's vertices
+  const Metric* surfaceMetric = nullptr;  ///< on the surface's vertices (the caller's)
 
   const TriMesh& mesh() const { return geodesic.refined ? geodesic.refinement.mesh : fine->mesh; }
 };
 Expected<FrontSurface> frontSurface(const TriMesh& surface, const Metric& metric, const SurfaceRemeshParams& params,
                                     Progress progress) {
   FrontSurface f;
+  f.surfaceMetric = &metric;
   // A triangle soup is neither refined nor subdivided: each face comes back as it was (with
   // points inside it, the repair's samples on its sides split it into 2-4 triangles).
   const bool soup = TriMesh::looksLikeTriangleSoup(surface.looseFaceCount(), surface.faceCount());
@@ -127,8 +129,12 @@ Status relaxDual(const FrontSurface& front, const TriMesh& surface, const Surfac
   if (front.geodesic.refined)
     if (Status s = originsOnSurface(front.geodesic, triangulation.origin); !s) return s;
   const TriMesh& relaxOn = front.geodesic.refined ? surface : front.fine->mesh;
+  RelaxationParams relaxation = params.relaxation;
+  // A non-uniform metric's density is kept: the metric on the mesh relaxed on.
+  const Metric& metric = front.geodesic.refined ? *front.surfaceMetric : front.fineMetric;
+  if (!metric.isUniform()) relaxation.density = &metric.P;
   Expected<RelaxationResult> relaxed =
-      relaxOnSurface(triangulation.mesh, triangulation.origin, relaxOn, params.relaxation, guard);
+      relaxOnSurface(triangulation.mesh, triangulation.origin, relaxOn, relaxation, guard);
   if (!relaxed) return relaxed.status();
   result = *relaxed;
   times.relaxation += lap(clock);
@@ -469,15 +475,17 @@ void swapFlipped(std::vector<SurfacePoint>& points, const std::vector<char>& fli
 /// keeps the triangulation's relaxation: plain, then with the corners of the crossing faces and
 /// their neighbours watched (twice), then those corners pinned (twice); the first with no more
 /// crossing pairs than the unrelaxed output is kept, else the unrelaxed one.
-void relaxCollapsed(const TriMesh& surface, const std::vector<char>& flipped, const SurfaceRemeshParams& params,
-                    SurfaceRemeshResult& r) {
+void relaxCollapsed(const TriMesh& surface, const std::vector<char>& flipped, const Metric& metric,
+                    const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
   constexpr int kWatchRounds = 2, kRounds = 4;
+  RelaxationParams relaxation = params.relaxation;
+  if (!metric.isUniform()) relaxation.density = &metric.P;  // the surface is the oriented input
   RelaxationGuard guard;
   for (int round = 0; round <= kRounds; ++round) {
     TriMesh relaxed = r.mesh;
     std::vector<SurfacePoint> points = r.origin;
     swapFlipped(points, flipped);
-    const Expected<RelaxationResult> done = relaxOnSurface(relaxed, points, surface, params.relaxation, guard);
+    const Expected<RelaxationResult> done = relaxOnSurface(relaxed, points, surface, relaxation, guard);
     if (!done) return;
     const std::vector<std::pair<int, int>> pairs = selfIntersectingFaces(relaxed);
     if (static_cast<int>(pairs.size()) <= r.crossingPairs) {
@@ -520,7 +528,7 @@ void collapseCrossings(const TriMesh& input, const TriMesh& surface, const std::
   if (collapsed.collapsed == 0) return;
   r.collapsedVertices += collapsed.collapsed;
   r.crossingPairs = static_cast<int>(selfIntersectingFaces(r.mesh).size());
-  if (params.relaxation.iterations > 0) relaxCollapsed(surface, flipped, params, r);
+  if (params.relaxation.iterations > 0) relaxCollapsed(surface, flipped, metric, params, r);
 }
 
 /// Issue 20: an output still above the count asked for (by more than countTolerance) after the
@@ -537,7 +545,7 @@ void collapseToAsked(const TriMesh& input, const TriMesh& surface, const std::ve
   r.collapsedVertices = collapsed.collapsed;
   if (collapsed.collapsed == 0) return;
   r.crossingPairs = static_cast<int>(selfIntersectingFaces(r.mesh).size());
-  if (params.relaxation.iterations > 0) relaxCollapsed(surface, flipped, params, r);
+  if (params.relaxation.iterations > 0) relaxCollapsed(surface, flipped, metric, params, r);
 }
 
 /// collapseToAsked, collapseCrossings, and the fewest vertices reached without crossing faces
@@ -684,8 +692,27 @@ double targetSpacing(const TriMesh& mesh, const FpsParams& sampling) {
   return std::sqrt(2.0 * area / (std::sqrt(3.0) * sampling.targetCount));
 }
 
+namespace {
+
+/// The spacing of `sampling`'s output in the metric's units (targetSpacing with the metric area
+/// sum P^2 dA): what F = 1 gives, and F times it where the speed is F.
+double metricSpacing(const TriMesh& mesh, const Metric& metric, const FpsParams& sampling) {
+  if (sampling.targetCount <= 0) return std::sqrt(3.0) * sampling.minSpacing;
+  double area = 0.0;
+  for (const Tri& t : mesh.triangles) {
+    double p2 = 0.0;
+    for (int v : t) p2 += metric.P[v] * metric.P[v] / 3.0;
+    area += 0.5 * areaNormal(mesh, t).norm() * p2;
+  }
+  return std::sqrt(2.0 * area / (std::sqrt(3.0) * sampling.targetCount));
+}
+
+}  // namespace
+
 Expected<AdaptiveRemeshResult> remeshAdaptive(const TriMesh& input, const std::vector<double>& values,
                                               const AdaptiveRemeshParams& params, Progress progress) {
+  if (!(params.gradation >= 0.0) || !std::isfinite(params.gradation))
+    return invalidInput("the gradation must be finite and >= 0");
   AdaptiveRemeshResult r;
   AdaptiveMetricParams metricParams = params.metric;
   r.automaticRadius = metricParams.field == AdaptiveField::TotalCurvature && metricParams.curvature.radius == 0.0 &&
@@ -695,6 +722,9 @@ Expected<AdaptiveRemeshResult> remeshAdaptive(const TriMesh& input, const std::v
   Expected<AdaptiveMetricResult> metric = adaptiveMetric(input, values, metricParams, progress.sub(0.0, 0.1));
   if (!metric) return metric.status();
   r.metric = std::move(*metric);
+  if (params.gradation > 0.0 && !r.metric.speed.metric.isUniform())
+    r.gradedVertices = limitSpeedGrowth(
+        input, params.gradation / metricSpacing(input, r.metric.speed.metric, params.remesh.sampling), r.metric.speed);
   Expected<SurfaceRemeshResult> remeshed =
       remeshSurface(input, r.metric.speed.metric, params.remesh, progress.sub(0.1, 1.0));
   if (!remeshed) return remeshed.status();

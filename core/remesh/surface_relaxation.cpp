@@ -314,11 +314,13 @@ std::vector<Freedom> freedoms(const TriMesh& output, const std::vector<SurfacePo
 /// Moves the free vertices of the output, one at a time, on the input surface.
 class Relaxer {
  public:
-  Relaxer(TriMesh& output, std::vector<SurfacePoint>& points, const SurfaceWalker& walker, double maxDeviation,
-          double aim, const std::vector<char>& watched)
+  Relaxer(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input, const SurfaceWalker& walker,
+          double maxDeviation, double aim, const std::vector<char>& watched, const std::vector<double>* density)
       : output_(output),
         pos_(output.positions),
         points_(points),
+        input_(input),
+        density_(density),
         walker_(walker),
         maxDeviation_(maxDeviation),
         aim_(aim),
@@ -350,15 +352,19 @@ class Relaxer {
   void relaxVertex(int v) {
     const Vec3 p = pos_[v];
     Vec3 centre = Vec3::Zero(), ringNormal = Vec3::Zero();
-    double ringLength = 0;
+    double ringLength = 0, weights = 0;
     for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c) {
-      const Vec3& a = pos_[output_.vertex(TriMesh::next(*c))];
+      const int n = output_.vertex(TriMesh::next(*c));
+      const Vec3& a = pos_[n];
       const Vec3& b = pos_[output_.vertex(TriMesh::prev(*c))];
-      centre += a;  // each neighbour once: it is `next` in exactly one face of a closed fan
+      const double w = density_ ? interpolate(input_, points_[n], *density_) : 1.0;
+      centre += w * a;  // each neighbour once: it is `next` in exactly one face of a closed fan
+      weights += w;
       ringNormal += (a - p).cross(b - p);
       ringLength += (a - p).norm();
     }
-    centre /= output_.valence(v);
+    if (!(weights > 0.0)) return;
+    centre /= weights;
     ringLength /= output_.valence(v);
     const double maxAway = maxDeviation_ * ringLength;
     // The tangent plane: the output ring's, unless the ring is folded against the input.
@@ -555,6 +561,8 @@ class Relaxer {
   TriMesh& output_;
   std::vector<Vec3>& pos_;  ///< the output's positions
   std::vector<SurfacePoint>& points_;
+  const TriMesh& input_;
+  const std::vector<double>* density_;  ///< RelaxationParams::density
   const SurfaceWalker& walker_;
   double maxDeviation_;
   double aim_;                        ///< moves keep the ring's smallest angle at min(before, aim); none past it
@@ -575,6 +583,8 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
   for (const std::vector<char>* flags : {&guard.pinned, &guard.watched})
     if (!flags->empty() && static_cast<int>(flags->size()) != output.vertexCount())
       return invalidInput("relaxation: one pinned or watched flag per output vertex is needed");
+  if (params.density && static_cast<int>(params.density->size()) != input.vertexCount())
+    return invalidInput("relaxation: the density needs one value per vertex of the surface");
   if (params.iterations <= 0) return r;
 
   const SurfaceWalker walker(input, params.featureAngleDegrees);
@@ -591,7 +601,7 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
   }
   for (size_t v = 0; v < guard.watched.size(); ++v) r.watchedVertices += guard.watched[v] && !fixed[v];
   const double aim = params.raiseSmallestAngle ? kPi : Relaxer::kSmallAngle;
-  Relaxer relaxer(output, points, walker, params.maxDeviation, aim, guard.watched);
+  Relaxer relaxer(output, points, input, walker, params.maxDeviation, aim, guard.watched, params.density);
   for (int it = 0; it < params.iterations; ++it) {
     relaxer.startRound();
     for (int v = 0; v < output.vertexCount(); ++v)

@@ -60,6 +60,14 @@ struct RelaxationParams {
   /// CGAL's isotropic remeshing). Off: the mean may lower it as long as it stays at least 30
   /// degrees, and steps are tried only under 30 degrees (evener angles, for the centroidal mode).
   bool raiseSmallestAngle = true;
+  /// Per vertex of the surface relaxed on, the metric P of an adaptive remesh (whose density goes
+  /// as P^2), or null (uniform). The move toward the ring's mean weights each neighbour by P
+  /// there: in 1D a vertex between a neighbour at spacing h and one at 2h (P twice as large at
+  /// the first) stays put, where the plain mean moves it toward the sparse side. fandisk adaptive
+  /// at 10% (the main command's script, 5 rounds): two-sided Hausdorff 1.61% -> 1.51% of the
+  /// diagonal; two speed zones 2x apart: density ratio 3.96 -> 4.47 (4 expected; the weights pull
+  /// toward the dense zone at the interface).
+  const std::vector<double>* density = nullptr;
   DelaunayFlipParams flips;  ///< the flips after each round
   /// After the Delaunay flips of each round, flips toward valence 6 (flipTowardValenceSix): evener
   /// angles, no longer Delaunay everywhere. Off by default; the remeshes' centroidal relaxation

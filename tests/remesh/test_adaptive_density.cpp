@@ -31,6 +31,7 @@
 #include "core/field/speed_field.h"
 #include "core/geodesic/farthest_point_sampling.h"
 #include "core/remesh/geodesic_delaunay.h"
+#include "core/remesh/remesh_surface.h"
 #include "tests/support/test_support.h"
 
 namespace gr {
@@ -132,6 +133,50 @@ TEST(AdaptiveDensity, TwoSpeedZonesDensityRatioIsSpeedRatioSquared) {
     expectValidDelaunay(m, speed->metric, samples);
   }
 }
+
+// The same two zones through the whole adaptive filter with its defaults (remeshAdaptive: the
+// gradation and the centroidal iterations, which move the samples to their cells' centres with
+// the metric's area as mass), then with 5 relaxation rounds too (their moves toward the ring's
+// mean weighted by the metric: RelaxationParams::density): the output's vertices are still 4
+// times denser in the slow zone.
+class AdaptiveFilterDensity : public ::testing::TestWithParam<int> {};
+
+TEST_P(AdaptiveFilterDensity, TwoSpeedZonesRatioKept) {
+  constexpr double kInterfaceGap = 0.05;
+  const TriMesh& m = square(0.0);
+  std::vector<double> q(m.vertexCount());
+  for (int v = 0; v < m.vertexCount(); ++v) q[v] = m.positions[v].x() < 0.5 ? 1.0 : 0.0;
+  AdaptiveRemeshParams params;
+  params.remesh.relaxation.iterations = GetParam();
+  params.metric.field = AdaptiveField::VertexQuality;
+  params.metric.speed.mapping = SpeedMapping::Direct;
+  params.metric.speed.strength = 2.0;
+  params.remesh.sampling.targetCount = 1000;
+  params.remesh.measure = false;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Expected<AdaptiveRemeshResult> r = remeshAdaptive(m, q, params);
+  ASSERT_TRUE(r) << r.status().message;
+  ASSERT_GT(params.remesh.centroidalIterations, 0);
+  ASSERT_GT(params.gradation, 0.0);
+  const auto countIn = [&](double x0, double x1) {
+    int n = 0;
+    for (const Vec3& p : r->remesh.mesh.positions)
+      n += p.x() >= x0 && p.x() < x1 && p.y() >= kMargin && p.y() <= 1.0 - kMargin;
+    return n;
+  };
+  const double height = 1.0 - 2 * kMargin;
+  const double fastArea = (0.5 - kInterfaceGap - kMargin) * height;
+  const double slowArea = (1.0 - kMargin - 0.5 - kInterfaceGap) * height;
+  const int fast = countIn(kMargin, 0.5 - kInterfaceGap), slow = countIn(0.5 + kInterfaceGap, 1.0 - kMargin);
+  const double ratio = (slow / slowArea) / (fast / fastArea);
+  std::printf(
+      "adaptive defaults, %d relaxation rounds, %d vertices (%.2f s): fast zone %d, slow zone %d, density ratio "
+      "%.3f (expected 4)\n",
+      GetParam(), r->remesh.mesh.vertexCount(), secondsSince(t0), fast, slow, ratio);
+  EXPECT_NEAR(ratio / 4.0, 1.0, 0.15);
+}
+
+INSTANTIATE_TEST_SUITE_P(Relaxation, AdaptiveFilterDensity, ::testing::Values(0, 5));
 
 // A smooth ramp: q = x with the Attractive mapping, F = 1 / (1 + mu x / s) with s the 95th
 // percentile of x. Five vertical bands of the counted region; each band's expected count is the

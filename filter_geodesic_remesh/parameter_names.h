@@ -17,7 +17,7 @@ constexpr const char *kRefinement = "Refinement", *kRelaxation = "Relaxation", *
 
 // Remeshing: Geodesic Adaptive; CurvatureRadius also in Compute Total Curvature
 constexpr const char *kField = "Field", *kMapping = "Mapping", *kStrength = "Strength",
-                     *kCurvatureRadius = "CurvatureRadius";
+                     *kCurvatureRadius = "CurvatureRadius", *kGradation = "Gradation";
 
 // Segmentation: Geodesic Centroidal Tessellation (also Seed and UseQualityAsSpeed above)
 constexpr const char *kRegions = "Regions", *kIterations = "Iterations", *kFeatureAlignment = "FeatureAlignment",

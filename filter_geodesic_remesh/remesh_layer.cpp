@@ -141,9 +141,8 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
 
 }  // namespace
 
-void declareSampling(const MeshModel& mesh, RichParameterList& params) {
+void declareSampling(const MeshModel& mesh, RichParameterList& params, const SurfaceRemeshParams& defaults) {
   const float diag = mesh.cm.bbox.IsNull() ? 1.0f : mesh.cm.bbox.Diag();
-  const SurfaceRemeshParams defaults;
   const double spacing = SurfaceRemeshParams::kDefaultSpacingFraction;
   params.addParam(RichInt(param::kTargetVertices, SurfaceRemeshParams::defaultTargetCount(mesh.cm.vn),
                           "Target vertices",

@@ -13,8 +13,9 @@
 namespace gr::filters {
 
 /// Adds the sampling parameters every remeshing filter has (TargetVertices, Spacing, Seed,
-/// SubVertexPlacement, CentroidalIterations), with the defaults of SurfaceRemeshParams and FpsParams.
-void declareSampling(const MeshModel& mesh, RichParameterList& params);
+/// SubVertexPlacement, CentroidalIterations), with the filter's defaults (`defaults`: the core's
+/// SurfaceRemeshParams of that filter).
+void declareSampling(const MeshModel& mesh, RichParameterList& params, const SurfaceRemeshParams& defaults);
 /// Reads them (the core checks them): Spacing is used only when TargetVertices is 0.
 FpsParams readSampling(const RichParameterList& params);
 

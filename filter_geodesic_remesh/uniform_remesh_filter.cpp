@@ -6,7 +6,7 @@
 namespace gr::filters {
 
 void declareUniformRemesh(const MeshModel& mesh, RichParameterList& params) {
-  declareSampling(mesh, params);
+  declareSampling(mesh, params, SurfaceRemeshParams{});
   const SurfaceRemeshParams defaults;
   params.addParam(RichInt(param::kRefinement, defaults.refinement, "Refinement",
                           "Compute the sampling and the Voronoi cells on the input subdivided this many times "

@@ -555,7 +555,9 @@ TEST_F(FilterInProcess, DeclaredDefaultsAreTheCoreParamsDefaults) {
                     float(SurfaceRemeshParams::kDefaultSpacingFraction * diag));
     EXPECT_EQ(params.getInt(filters::param::kSeed), int(remesh.sampling.seed));
     EXPECT_EQ(params.getBool(filters::param::kSubVertexPlacement), remesh.sampling.subVertexPlacement);
-    EXPECT_EQ(params.getInt(filters::param::kCentroidalIterations), remesh.centroidalIterations);
+    const bool isAdaptive = std::string(name) == "Remeshing: Geodesic Adaptive";
+    EXPECT_EQ(params.getInt(filters::param::kCentroidalIterations),
+              isAdaptive ? adaptive.remesh.centroidalIterations : remesh.centroidalIterations);
   }
   use("Remeshing: Geodesic Uniform");
   declare(*mm);
@@ -567,8 +569,10 @@ TEST_F(FilterInProcess, DeclaredDefaultsAreTheCoreParamsDefaults) {
   EXPECT_EQ(params.getEnum(filters::param::kMapping), int(adaptive.metric.speed.mapping));
   EXPECT_FLOAT_EQ(params.getFloat(filters::param::kStrength), float(adaptive.metric.speed.strength));
   EXPECT_FLOAT_EQ(params.getAbsPerc(filters::param::kCurvatureRadius), float(adaptive.metric.curvature.radius));
-  EXPECT_FALSE(params.hasParameter(filters::param::kRelaxation)) << "the adaptive preset sets the relaxation";
-  EXPECT_EQ(adaptive.remesh.relaxation.iterations, 0);
+  EXPECT_FLOAT_EQ(params.getFloat(filters::param::kGradation), float(adaptive.gradation));
+  EXPECT_EQ(params.getInt(filters::param::kRelaxation), adaptive.remesh.relaxation.iterations);
+  EXPECT_EQ(adaptive.remesh.relaxation.iterations, 0);  // the adaptive preset's
+  EXPECT_EQ(adaptive.remesh.centroidalIterations, AdaptiveRemeshParams::kDefaultCentroidalIterations);
   use("Compute Total Curvature (Normal Cycle) into Vertex Quality");
   declare(*mm);
   EXPECT_FLOAT_EQ(params.getAbsPerc(filters::param::kCurvatureRadius), float(CurvatureParams().radius));

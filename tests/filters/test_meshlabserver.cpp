@@ -430,6 +430,19 @@ TEST(Meshlabserver, AdaptiveCurvatureRemeshOfFandisk) {
   EXPECT_EQ(result->vertexCount(), test::numberBefore(run.output, "by farthest-point sampling") +
                                        test::numberBefore(run.output, "added to make the triangulation valid") -
                                        std::max(0, test::numberBefore(run.output, "removed by edge collapses")));
+  // Issue 18: the script's gradation, centroidal iterations and relaxation give good triangles
+  // (smallest angle >= 20 degrees, <= 2% of the triangles with an angle under 30) within 10% of
+  // the two-sided Hausdorff distance the script had without them (1.468% of the diagonal).
+  EXPECT_NE(run.output.find("after the gradation (0.4 per target spacing"), std::string::npos) << run.output;
+  const test::AngleRecount angles = test::recountAngles(*result);
+  const auto input = loadTriMesh(test::meshPath("fandisk.off"));
+  ASSERT_TRUE(input);
+  const double hausdorff = oracle::twoSidedDistance(*result, *input).max / input->boundingBoxDiagonal();
+  std::printf("fandisk adaptive script: smallest angle %.1f deg, %.2f%% under 30, Hausdorff %.3f%%\n",
+              angles.smallestDegrees, 100 * angles.shareBelow30, 100 * hausdorff);
+  EXPECT_GE(angles.smallestDegrees, 20.0);
+  EXPECT_LE(angles.shareBelow30, 0.02);
+  EXPECT_LE(hausdorff, 1.1 * 0.01468);
 }
 
 // Any filter that writes quality drives the adaptive remeshing: curvature into quality, then

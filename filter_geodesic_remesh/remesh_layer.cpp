@@ -30,18 +30,22 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
                : std::string()) +
           ": " + count(r.mesh.vertexCount()) + " vertices, " + count(r.mesh.faceCount()) + " faces on the new layer '" +
           label.toStdString() + "'");
-  ctx.log("Samples: " + count(r.sampledCount) + " by farthest-point sampling, " + count(r.addedSamples) +
-          " added to make the triangulation valid (" + count(r.repairRounds) + " rounds" +
-          (r.crossingRounds > 0 ? ", " + count(r.crossingRounds) + " of them where output triangles crossed"
-                                : std::string()) +
-          ")" +
-          (r.droppedSamples > 0 ? ", " + count(r.droppedSamples) + " left out (nearest to no vertex)" : std::string()) +
-          (r.collapsedVertices > 0
-               ? ", " + count(r.collapsedVertices) + " removed by edge collapses to reach the count asked for"
-               : std::string()) +
-          "; covering radius " + formatNumber(r.coveringRadius, "%.4g") +
-          (commit.weighted ? " (a travel time: distance over speed)" : std::string()) +
-          (r.flippedEdges > 0 ? "; " + count(r.flippedEdges) + " edges flipped to Delaunay" : std::string()));
+  ctx.log(
+      "Samples: " + count(r.sampledCount) + " by farthest-point sampling" +
+      (r.lloydIterations > 0 ? " moved by " + count(r.lloydIterations) + " geodesic Lloyd iterations (their energy " +
+                                   formatNumber(100 * (r.lloydEnergyRatio - 1.0), "%+.1f") + "%)"
+                             : std::string()) +
+      ", " + count(r.addedSamples) + " added to make the triangulation valid (" + count(r.repairRounds) + " rounds" +
+      (r.crossingRounds > 0 ? ", " + count(r.crossingRounds) + " of them where output triangles crossed"
+                            : std::string()) +
+      ")" +
+      (r.droppedSamples > 0 ? ", " + count(r.droppedSamples) + " left out (nearest to no vertex)" : std::string()) +
+      (r.collapsedVertices > 0
+           ? ", " + count(r.collapsedVertices) + " removed by edge collapses to reach the count asked for"
+           : std::string()) +
+      "; covering radius " + formatNumber(r.coveringRadius, "%.4g") +
+      (commit.weighted ? " (a travel time: distance over speed)" : std::string()) +
+      (r.flippedEdges > 0 ? "; " + count(r.flippedEdges) + " edges flipped to Delaunay" : std::string()));
 }
 
 /// When the repair added samples and the sampling was redone to land at the count asked for

@@ -145,6 +145,8 @@ Status relaxDual(const FrontSurface& front, const TriMesh& surface, const Surfac
 /// faces (selfIntersectingFaces).
 struct SampledDual {
   FpsResult sampling;
+  int lloydIterations = 0;        ///< centroidal iterations accepted
+  double lloydEnergyRatio = 1.0;  ///< their energy at the end over the samples'
   DelaunayResult dual;
   RelaxationResult relaxation;
   int requested = 0;
@@ -297,6 +299,8 @@ Expected<SampledDual> sampleAndTriangulate(FastMarcher& marcher, const FrontSurf
         geodesicLloyd(front.mesh(), metric, marcher, d.sampling.origin, lloyd, progress.sub(0.7 - lloydShare, 0.7));
     if (!relaxed) return relaxed.status();
     d.sampling.origin = std::move(relaxed->seeds);  // the marcher holds their cells, 0..n-1 in order
+    d.lloydIterations = relaxed->iterations;
+    if (relaxed->energy.front() > 0.0) d.lloydEnergyRatio = relaxed->energy.back() / relaxed->energy.front();
   }
   times.sampling += lap(clock);
   if (Status s = triangulateAndRelax(marcher, front, surface, params, d, progress.sub(0.7, 1.0), times); !s) return s;
@@ -583,6 +587,8 @@ Expected<SurfaceRemeshResult> remeshOnce(const TriMesh& input, const Metric& met
   const FpsResult& sampling = sampled->sampling;
   DelaunayResult& dual = sampled->dual;
   r.sampledAsked = sampled->requested;
+  r.lloydIterations = sampled->lloydIterations;
+  r.lloydEnergyRatio = sampled->lloydEnergyRatio;
   r.relaxation = sampled->relaxation;
   r.mesh = std::move(dual.mesh);
   r.origin = originsOnInput(dual.origin, *front, surface, oriented->flipped);

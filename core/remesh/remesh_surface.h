@@ -154,7 +154,11 @@ struct SurfaceRemeshResult {
   int samplingRounds = 0;
   int sampledAsked = 0;
   int fewestCount = 0;
-  int sampledCount = 0;         ///< samples placed by farthest-point sampling (of the kept sampling)
+  int sampledCount = 0;  ///< samples placed by farthest-point sampling (of the kept sampling)
+  /// Centroidal iterations (SurfaceRemeshParams::centroidalIterations) accepted on the kept
+  /// sampling, and the Lloyd energy after them over the samples' (1 without iterations).
+  int lloydIterations = 0;
+  double lloydEnergyRatio = 1.0;
   double coveringRadius = 0.0;  ///< largest distance to a sample after the sampling (a travel time with a metric)
   int addedSamples = 0;         ///< samples the repair of the triangulation added
   int droppedSamples = 0;       ///< samples inside faces left out (nearest to no vertex)

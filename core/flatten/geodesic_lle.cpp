@@ -94,17 +94,20 @@ struct BaseField {
   Eigen::MatrixXd between;  ///< between(i, j): from base j's front at base i (graph-completed)
 };
 
-/// Fronts stop at this many covering radii of the sampling (plane10k, B = 100: 105k vertex visits,
-/// against 345k at 5 radii and 1M for whole fronts). Inside the patch a vertex's K = 8 nearest
-/// bases lie within about 2.5 of them; near the patch's border and corners it sees fewer, and uses
+/// Fronts stop at this many covering radii of the sampling (plane10k, B = 100: about 90k vertex
+/// visits, against 345k at 5 radii and 1M for whole fronts). Inside the patch a vertex's K = 8
+/// nearest bases lie within about 2.3 of them; near the patch's border and corners it sees fewer, and uses
 /// those (at least kLeastBasesSeen, else the radius doubles around it, below). The Gram matrices
 /// also need the distances between a vertex's neighbouring bases, up to twice as far apart: two
 /// bases' distance is also the least over the vertices both fronts reached of the sum of their
 /// distances there (exact where a vertex lies on the geodesic between them, so up to 5 radii);
-/// beyond, the shortest path through the bases' own graph. Measured: plane10k 103 -> 56 ms with
-/// the same stretch (1.0000); the atlas of bunny00 and of its 603k subdivision, stretch,
-/// conformal distortion and packing the same to the fourth decimal.
-constexpr double kFrontRadii = 2.5;
+/// beyond, the shortest path through the bases' own graph. Measured (bench_flatten, B = 100,
+/// medians of 3): 2.5 radii plane10k 53.8 ms, cap10k 55.8 ms; 2.3: 49.4 and 53.2 ms; 2.2: 49.6
+/// and 51.3 ms; 2.1: 50.7 and 59.6 ms (more vertices see too few bases, their bases run again);
+/// 2.0: the 10k cap folds (3 faces, untangled), 75.8 ms. From 5 radii to 2.3 the stretch of the
+/// plane, cylinder and caps and the atlases of fandisk and bunny00 (stretch, conformal distortion,
+/// packing) are the same to the third decimal (tests/flatten, tests/atlas).
+constexpr double kFrontRadii = 2.3;
 /// A vertex must see at least this many bases (or K if smaller); fewer make the radius double.
 constexpr int kLeastBasesSeen = 4;
 

@@ -264,3 +264,45 @@ TEST(SpeedField, RejectsARangeTooWideForTheSpeed) {
 
 }  // namespace
 }  // namespace gr
+
+namespace gr {
+namespace {
+
+// Gradation (limitSpeedGrowth): on a regular grid of the unit square, F = 0.1 on the column
+// x = 0.5 and 1 elsewhere. Lowered to min over y of F(y) + g d(x, y) along edges, F becomes
+// min(1, 0.1 + g |x - 0.5|) exactly on the grid's rows (the shortest edge path to the column runs
+// along the row), the metric P = 1/F follows, speedMax and the count of lowered vertices are those
+// of that closed form; growth 0 and a uniform metric change nothing.
+TEST(SpeedFieldGradation, GrowthFromASlowColumnIsTheClosedForm) {
+  constexpr int kN = 40;  // planeGrid(40): 41 x 41 vertices, spacing 1/40
+  const TriMesh m = test::planeGrid(kN);
+  SpeedFieldResult speed;
+  speed.speed.assign(m.vertexCount(), 1.0);
+  for (int v = 0; v < m.vertexCount(); ++v)
+    if (std::abs(m.positions[v].x() - 0.5) < 1e-9) speed.speed[v] = 0.1;
+  speed.metric = Metric::fromSpeed(m, speed.speed).value();
+  speed.speedMin = 0.1;
+  const double g = 2.0;
+  const int lowered = limitSpeedGrowth(m, g, speed);
+  int expectLowered = 0;
+  double largest = 0.0;
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    const double expected = std::min(1.0, 0.1 + g * std::abs(m.positions[v].x() - 0.5));
+    EXPECT_NEAR(speed.speed[v], expected, 1e-12) << "vertex " << v;
+    EXPECT_NEAR(speed.metric.P[v], 1.0 / expected, 1e-9) << "vertex " << v;
+    expectLowered += expected < 1.0 && std::abs(m.positions[v].x() - 0.5) > 1e-9;
+    largest = std::max(largest, expected);
+  }
+  EXPECT_EQ(lowered, expectLowered);
+  EXPECT_DOUBLE_EQ(speed.speedMax, largest);
+
+  const std::vector<double> before = speed.speed;
+  EXPECT_EQ(limitSpeedGrowth(m, 0.0, speed), 0);
+  EXPECT_EQ(speed.speed, before);
+  SpeedFieldResult uniform;
+  uniform.speed.assign(m.vertexCount(), 1.0);
+  EXPECT_EQ(limitSpeedGrowth(m, g, uniform), 0);
+}
+
+}  // namespace
+}  // namespace gr

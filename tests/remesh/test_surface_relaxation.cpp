@@ -253,6 +253,15 @@ TEST(SurfaceRelaxation, BadInputIsReportedAndChangesNothing) {
   ASSERT_FALSE(r);
   EXPECT_EQ(r.status().code, StatusCode::InvalidInput);
   EXPECT_EQ(out.positions, d.mesh.positions);
+
+  points = d.origin;
+  const std::vector<double> density(input.vertexCount() - 1, 1.0);  // one value short
+  RelaxationParams params;
+  params.density = &density;
+  r = relaxOnSurface(out, points, input, params);
+  ASSERT_FALSE(r);
+  EXPECT_EQ(r.status().code, StatusCode::InvalidInput);
+  EXPECT_EQ(out.positions, d.mesh.positions);
 }
 
 /// Three faces on the edge (0, 1): a mesh that is not manifold.

@@ -691,29 +691,19 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   return r;
 }
 
-double targetSpacing(const TriMesh& mesh, const FpsParams& sampling) {
-  if (sampling.targetCount <= 0) return std::sqrt(3.0) * sampling.minSpacing;
-  double area = 0.0;
-  for (const Tri& t : mesh.triangles) area += 0.5 * areaNormal(mesh, t).norm();
-  return std::sqrt(2.0 * area / (std::sqrt(3.0) * sampling.targetCount));
-}
-
-namespace {
-
-/// The spacing of `sampling`'s output in the metric's units (targetSpacing with the metric area
-/// sum P^2 dA): what F = 1 gives, and F times it where the speed is F.
-double metricSpacing(const TriMesh& mesh, const Metric& metric, const FpsParams& sampling) {
+double targetSpacing(const TriMesh& mesh, const FpsParams& sampling, const Metric& metric) {
   if (sampling.targetCount <= 0) return std::sqrt(3.0) * sampling.minSpacing;
   double area = 0.0;
   for (const Tri& t : mesh.triangles) {
-    double p2 = 0.0;
-    for (int v : t) p2 += metric.P[v] * metric.P[v] / 3.0;
+    double p2 = 1.0;  // the mean P^2 of the face's corners
+    if (!metric.isUniform()) {
+      p2 = 0.0;
+      for (int v : t) p2 += metric.P[v] * metric.P[v] / 3.0;
+    }
     area += 0.5 * areaNormal(mesh, t).norm() * p2;
   }
   return std::sqrt(2.0 * area / (std::sqrt(3.0) * sampling.targetCount));
 }
-
-}  // namespace
 
 Expected<AdaptiveRemeshResult> remeshAdaptive(const TriMesh& input, const std::vector<double>& values,
                                               const AdaptiveRemeshParams& params, Progress progress) {
@@ -730,7 +720,7 @@ Expected<AdaptiveRemeshResult> remeshAdaptive(const TriMesh& input, const std::v
   r.metric = std::move(*metric);
   if (params.gradation > 0.0 && !r.metric.speed.metric.isUniform())
     r.gradedVertices = limitSpeedGrowth(
-        input, params.gradation / metricSpacing(input, r.metric.speed.metric, params.remesh.sampling), r.metric.speed);
+        input, params.gradation / targetSpacing(input, params.remesh.sampling, r.metric.speed.metric), r.metric.speed);
   Expected<SurfaceRemeshResult> remeshed =
       remeshSurface(input, r.metric.speed.metric, params.remesh, progress.sub(0.1, 1.0));
   if (!remeshed) return remeshed.status();

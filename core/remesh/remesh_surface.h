@@ -204,8 +204,10 @@ inline Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const S
 /// The spacing of `sampling`'s output on `mesh`: the side h of the equilateral triangles that N
 /// vertices would make of the surface's area A (N vertices make about 2N triangles of area
 /// sqrt(3)/4 h^2, so h = sqrt(2 A / (sqrt(3) N))) for a target count N; for a spacing
-/// (a covering radius r), the side sqrt(3) r of the triangles that have r as circumradius.
-double targetSpacing(const TriMesh& mesh, const FpsParams& sampling);
+/// (a covering radius r), the side sqrt(3) r of the triangles that have r as circumradius. With a
+/// non-uniform `metric`, in its units: A is the metric's area, the sum of P^2 dA (the spacing
+/// where the speed is F is then F times it).
+double targetSpacing(const TriMesh& mesh, const FpsParams& sampling, const Metric& metric = Metric::uniform());
 
 /// Adaptive remeshing: the metric from a field (adaptive_metric.h), then remeshSurface with it.
 struct AdaptiveRemeshParams {

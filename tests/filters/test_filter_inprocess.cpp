@@ -870,6 +870,16 @@ TEST_F(FilterInProcess, AdaptiveRemeshBadFieldsLeaveTheDocumentAlone) {
   expectCleanFailure(*mm, StatusCode::InvalidInput, "strength");
   params.setValue(filters::param::kMapping, EnumValue(7));
   expectCleanFailure(*mm, StatusCode::InvalidInput, "Mapping must be 0 to 2");
+  params.setValue(filters::param::kMapping, EnumValue(1));
+  params.setValue(filters::param::kStrength, FloatValue(4.0f));
+  params.setValue(filters::param::kField, EnumValue(1));  // total curvature: valid again
+  params.setValue(filters::param::kGradation, FloatValue(-0.5f));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "the gradation must be finite and >= 0");
+  params.setValue(filters::param::kGradation, FloatValue(std::numeric_limits<float>::quiet_NaN()));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "the gradation must be finite and >= 0");
+  params.setValue(filters::param::kGradation, FloatValue(0.4f));
+  params.setValue(filters::param::kRelaxation, IntValue(-1));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "Relaxation must be 0 to");
   EXPECT_EQ(doc.meshList.size(), 1) << "a failed filter added a layer";
 }
 

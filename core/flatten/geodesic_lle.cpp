@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -133,29 +134,45 @@ std::vector<int> underCovered(int vertices, const std::vector<std::vector<std::p
   return lacking;
 }
 
-/// Missing distances between bases: shortest paths through the known ones (Dijkstra per base, up
-/// to `limit`: farther pairs are never read, and stay unreached).
+/// Missing distances between bases: shortest paths through the known ones (a Dijkstra per base
+/// on the graph of known pairs, up to `limit`: farther pairs are never read, and stay unreached).
 void completeBetween(Eigen::MatrixXd& between, double limit) {
   const int nb = static_cast<int>(between.rows());
+  std::vector<std::vector<std::pair<int, double>>> known(nb);
   for (int i = 0; i < nb; ++i)
-    for (int j = 0; j < nb; ++j)  // symmetric: the smaller of the two fronts' values
-      between(i, j) = between(j, i) = std::min(between(i, j), between(j, i));
-  Eigen::MatrixXd complete = between;
-  for (int i = 0; i < nb; ++i) {
-    std::vector<double> d(nb, kUnreached);
-    std::vector<char> done(nb, 0);
-    d[i] = 0.0;
-    for (int step = 0; step < nb; ++step) {  // dense Dijkstra: O(B^2) per base
-      int u = -1;
-      for (int j = 0; j < nb; ++j)
-        if (!done[j] && (u < 0 || d[j] < d[u])) u = j;
-      if (u < 0 || !std::isfinite(d[u]) || d[u] > limit) break;
-      done[u] = 1;
-      for (int j = 0; j < nb; ++j)
-        if (std::isfinite(between(u, j))) d[j] = std::min(d[j], d[u] + between(u, j));
+    for (int j = i + 1; j < nb; ++j) {  // symmetric: the smaller of the two fronts' values
+      const double d = std::min(between(i, j), between(j, i));
+      between(i, j) = between(j, i) = d;
+      if (std::isfinite(d)) {
+        known[i].emplace_back(j, d);
+        known[j].emplace_back(i, d);
+      }
     }
-    for (int j = 0; j < nb; ++j)
+  Eigen::MatrixXd complete = between;
+  std::vector<double> d(nb, kUnreached);
+  std::vector<int> reached;
+  std::vector<std::pair<double, int>> heap;  // min-heap through std::greater
+  for (int i = 0; i < nb; ++i) {
+    d[i] = 0.0;
+    reached.assign(1, i);
+    heap.assign(1, {0.0, i});
+    while (!heap.empty()) {
+      std::pop_heap(heap.begin(), heap.end(), std::greater<>());
+      const auto [du, u] = heap.back();
+      heap.pop_back();
+      if (du > d[u] || du > limit) continue;
+      for (const auto& [j, w] : known[u])
+        if (du + w < d[j]) {
+          if (!std::isfinite(d[j])) reached.push_back(j);
+          d[j] = du + w;
+          heap.emplace_back(d[j], j);
+          std::push_heap(heap.begin(), heap.end(), std::greater<>());
+        }
+    }
+    for (int j : reached) {
       if (!std::isfinite(between(i, j))) complete(i, j) = d[j];
+      d[j] = kUnreached;
+    }
   }
   between = std::move(complete);
 }

@@ -123,6 +123,9 @@ void scaleToPatch(const TriMesh& patch, std::vector<Vec2>& uv) {
   for (Vec2& q : uv) q *= s;
 }
 
+/// n x 2, a vertex's u and v side by side: the right-hand side is scattered by vertex.
+using UvMatrix = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
+
 struct System {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> solver;  // reads the lower triangle
   double proximal = 0.0;
@@ -178,8 +181,7 @@ Status factorise(const TriMesh& patch, const std::vector<FlatFace>& faces, Syste
 /// The global step: the map whose edges best match the rotated flat edges, into `target`
 /// (`rhs` and `x` are the solve's buffers, reused across rounds).
 void globalStep(const TriMesh& patch, const std::vector<FlatFace>& faces, const std::vector<Eigen::Matrix2d>& rotation,
-                const std::vector<Vec2>& uv, System& system, Eigen::MatrixXd& rhs, Eigen::MatrixXd& x,
-                std::vector<Vec2>& target) {
+                const std::vector<Vec2>& uv, System& system, UvMatrix& rhs, UvMatrix& x, std::vector<Vec2>& target) {
   const int n = patch.vertexCount();
   rhs.resize(n, 2);
   for (int v = 0; v < n; ++v) rhs.row(v) = system.proximal * uv[v].transpose();
@@ -230,7 +232,7 @@ Expected<ArapResult> relaxAsRigidAsPossible(const TriMesh& patch, std::vector<Ve
   System system;
   if (Status s = factorise(patch, faces, system); !s) return s;
   std::vector<Vec2> next(current.size()), target;
-  Eigen::MatrixXd rhs, x;
+  UvMatrix rhs, x;
   double energy = r.energyBefore;
   const double clearance = kBoundaryClearance * patch.meanEdgeLength();
   for (int round = 0; round < params.rounds; ++round) {

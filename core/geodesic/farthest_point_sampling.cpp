@@ -84,6 +84,15 @@ Status checkFpsParams(const TriMesh& mesh, const FpsParams& params) {
                         " vertices");
   if (!(params.boundaryPriority >= 1.0) || !std::isfinite(params.boundaryPriority))
     return invalidInput("the boundary priority must be finite and >= 1");
+  std::vector<char> taken(mesh.vertexCount(), 0);
+  for (int v : params.initialSamples) {
+    if (v < 0 || v >= mesh.vertexCount() || mesh.valence(v) == 0)
+      return invalidInput("an initial sample (" + std::to_string(v) + ") is not a vertex in a face");
+    if (taken[v]++) return invalidInput("the initial sample " + std::to_string(v) + " is given twice");
+  }
+  if (params.targetCount > 0 && static_cast<int>(params.initialSamples.size()) > params.targetCount)
+    return invalidInput(std::to_string(params.initialSamples.size()) + " initial samples for a target of " +
+                        std::to_string(params.targetCount));
   return Status::ok();
 }
 
@@ -113,6 +122,34 @@ std::vector<int> firstVerticesOfOtherComponents(const TriMesh& mesh, int first) 
     if (c != mesh.topology.componentOfVertex[first]) pending.push_back(firstOfComponent[c]);
   std::reverse(pending.begin(), pending.end());
   return pending;
+}
+
+/// The lowest vertex of each component with no vertex in `samples`, the next one to take at the back.
+std::vector<int> firstVerticesOfUnsampledComponents(const TriMesh& mesh, const std::vector<int>& samples) {
+  std::vector<char> sampled(mesh.topology.components, 0);
+  for (int v : samples)
+    if (mesh.topology.componentOfVertex[v] >= 0) sampled[mesh.topology.componentOfVertex[v]] = 1;
+  std::vector<int> firstOfComponent(mesh.topology.components, -1);
+  for (int v = mesh.vertexCount() - 1; v >= 0; --v)
+    if (mesh.topology.componentOfVertex[v] >= 0) firstOfComponent[mesh.topology.componentOfVertex[v]] = v;
+  std::vector<int> pending;
+  for (int c = mesh.topology.components - 1; c >= 0; --c)
+    if (!sampled[c]) pending.push_back(firstOfComponent[c]);
+  return pending;
+}
+
+/// The initial samples, each the source of its own cell, and their field: one front from all.
+Status addInitialSamples(FastMarcher& marcher, const std::vector<int>& samples, FpsResult& r,
+                         std::vector<Vec3>& samplePosition) {
+  marcher.reset();
+  for (int v : samples) {
+    r.samples.push_back(v);
+    r.origin.push_back(SurfacePoint::atVertex(v));
+    samplePosition.push_back(marcher.mesh().positions[v]);
+    r.insertionDistance.push_back(kUnreached);
+    if (Status s = marcher.addSource(v, static_cast<int>(r.samples.size()) - 1); !s) return s;
+  }
+  return marcher.propagate();
 }
 
 /// U at the top of a queue; 0 when it is empty.
@@ -174,11 +211,14 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
   if (Status s = checkFpsParams(mesh, params); !s) return s;
   const int usable = usableVertexCount(mesh);
   const std::vector<char> onBoundary = boundaryVertexFlags(mesh);
-  const Expected<int> first = firstSample(marcher, params.seed);
+  const bool initial = !params.initialSamples.empty();
+  const Expected<int> first =
+      initial ? Expected<int>(params.initialSamples.front()) : firstSample(marcher, params.seed);
   if (!first) return first.status();
-  // Components other than the start's have U = +inf: each gets a first sample (its lowest
-  // vertex) before any component gets a second one.
-  std::vector<int> pending = firstVerticesOfOtherComponents(mesh, *first);
+  // Components with no sample yet have U = +inf: each gets a first sample (its lowest vertex)
+  // before any component gets a second one.
+  std::vector<int> pending = initial ? firstVerticesOfUnsampledComponents(mesh, params.initialSamples)
+                                     : firstVerticesOfOtherComponents(mesh, *first);
 
   FpsResult r;
   const std::vector<double>& U = marcher.distance();
@@ -190,8 +230,11 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
   int next = *first;
   double nextU = kUnreached;
   std::vector<Vec3> samplePosition;
-  for (;;) {
-    if (Status s = addSample(marcher, params, onBoundary, next, nextU, r, samplePosition); !s) return s;
+  if (initial)
+    if (Status s = addInitialSamples(marcher, params.initialSamples, r, samplePosition); !s) return s;
+  for (bool added = initial;; added = false) {  // the initial samples are in: their front is the first
+    if (!added)
+      if (Status s = addSample(marcher, params, onBoundary, next, nextU, r, samplePosition); !s) return s;
     for (int v : marcher.acceptedOrder()) (onBoundary[v] ? farthestOnBoundary : farthest).update(v);
     if (static_cast<int>(r.samples.size()) >= cap) break;
     if (!progress.report(double(r.samples.size()) / cap, "Farthest point sampling")) return cancelled();

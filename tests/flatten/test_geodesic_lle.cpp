@@ -116,6 +116,39 @@ TEST(GeodesicLle, SphericalCapNeedsNoTutte) {
   }
 }
 
+// A base one edge inside the border makes the border vertices beside it extrapolate (they see it
+// an edge away and the other bases far on one side): on this cap, with its first bases chosen in 3D,
+// 4 faces folded before the bases were moved onto the border. No base is left one edge inside, and
+// the extension folds nothing, whatever the seed.
+TEST(GeodesicLle, NoBaseOneEdgeInsideTheBorderAndNoFoldOnTheCap) {
+  const TriMesh m = gridSurface(99, [](double s, double t) {
+    const double x = 2.0 * s - 1.0, y = 2.0 * t - 1.0;
+    const double r = std::sqrt(x * x + y * y) / std::sqrt(2.0), theta = std::atan2(y, x);
+    const double phi = r * kPiValue / 3.0;
+    return Vec3(std::sin(phi) * std::cos(theta), std::sin(phi) * std::sin(theta), std::cos(phi));
+  });
+  std::vector<char> border(m.vertexCount(), 0);
+  for (int c = 0; c < 3 * m.faceCount(); ++c)
+    if (m.oppositeCorner[c] < 0) border[m.vertex(TriMesh::next(c))] = border[m.vertex(TriMesh::prev(c))] = 1;
+  for (unsigned seed = 0; seed < 4; ++seed) {
+    SCOPED_TRACE(seed);
+    LleFlatteningParams params;
+    params.seed = seed;
+    const Expected<LleFlatteningResult> r = flattenGeodesicLle(m, params);
+    ASSERT_TRUE(r) << r.status().message;
+    EXPECT_EQ(r->foldedBeforeRepair, 0);
+    std::vector<char> isBase(m.vertexCount(), 0);
+    for (int b : r->basePoints) isBase[b] = 1;
+    for (int b : r->basePoints) {
+      if (border[b]) continue;
+      for (const Tri& t : m.triangles) {
+        if (t[0] != b && t[1] != b && t[2] != b) continue;
+        for (int w : t) EXPECT_FALSE(border[w] && !isBase[w]) << "base " << b << " is one edge inside the border";
+      }
+    }
+  }
+}
+
 TEST(GeodesicLle, SphereBandCutOpenHasNoFold) {
   const TriMesh m = gridSurface(50, [](double s, double t) {
     const double theta = 2.0 * kPiValue * s, phi = 0.5 * kPiValue * (0.05 + 0.9 * t);  // a band below the pole

@@ -81,6 +81,79 @@ TEST(FarthestPointSampling, EachSampleIsTheFarthestVertexFromTheEarlierOnes) {
   }
 }
 
+// From given initial samples: they come first, in order, and every later sample is the farthest
+// vertex from all before it (the same brute-force oracle as above), its insertion distance that
+// farthest distance; the field and cells returned are those of one front from all samples.
+TEST(FarthestPointSampling, GoesOnGreedilyFromInitialSamples) {
+  const TriMesh m = test::loadRealMesh("fandisk.off");
+  FpsParams params;
+  params.targetCount = 30;
+  params.initialSamples = {5, 4000, 100, 2500};
+  const auto r = farthestPointSampling(m, Metric::uniform(), params);
+  ASSERT_TRUE(r) << r.status().message;
+  ASSERT_EQ(r->samples.size(), 30u);
+  for (size_t k = 0; k < params.initialSamples.size(); ++k) {
+    EXPECT_EQ(r->samples[k], params.initialSamples[k]);
+    EXPECT_EQ(r->insertionDistance[k], kUnreached);
+  }
+  for (size_t k = params.initialSamples.size(); k < r->samples.size(); ++k) {
+    const std::vector<int> earlier(r->samples.begin(), r->samples.begin() + k);
+    const auto field = fastMarching(m, Metric::uniform(), earlier);
+    const double best = *std::max_element(field->distance.begin(), field->distance.end());
+    EXPECT_EQ(field->distance[r->samples[k]], best) << "sample " << k << " is not the farthest vertex";
+    EXPECT_EQ(r->insertionDistance[k], best) << "sample " << k;
+  }
+  const auto all = fastMarching(m, Metric::uniform(), r->samples);
+  double largest = 0.0;
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    EXPECT_NEAR(r->distance[v], all->distance[v], 1e-12) << v;
+    largest = std::max(largest, all->distance[v]);
+  }
+  EXPECT_NEAR(r->coveringRadius, largest, 1e-12);
+  // As many initial samples as the target: those, and their field.
+  params.targetCount = 4;
+  const auto only = farthestPointSampling(m, Metric::uniform(), params);
+  ASSERT_TRUE(only);
+  EXPECT_EQ(only->samples, params.initialSamples);
+}
+
+TEST(FarthestPointSampling, InitialSamplesOnOneComponentLeaveNoneUnsampled) {
+  const TriMesh m = test::loadRealMesh("knot2.off");  // two tori
+  ASSERT_EQ(m.topology.components, 2);
+  int onFirst = -1;
+  for (int v = 0; v < m.vertexCount() && onFirst < 0; ++v)
+    if (m.topology.componentOfVertex[v] == 0) onFirst = v;
+  FpsParams params;
+  params.targetCount = 6;
+  params.initialSamples = {onFirst};
+  const auto r = farthestPointSampling(m, Metric::uniform(), params);
+  ASSERT_TRUE(r) << r.status().message;
+  std::set<int> components;
+  for (int s : r->samples) components.insert(m.topology.componentOfVertex[s]);
+  EXPECT_EQ(components.size(), 2u);
+  EXPECT_EQ(m.topology.componentOfVertex[r->samples[1]], 1) << "the other component's first sample comes next";
+  for (int v = 0; v < m.vertexCount(); ++v) ASSERT_TRUE(std::isfinite(r->distance[v])) << v;
+}
+
+TEST(FarthestPointSampling, RejectsBadInitialSamples) {
+  const TriMesh m = test::planeGrid(4);
+  FpsParams p;
+  p.targetCount = 5;
+  for (const std::vector<int>& bad :
+       std::vector<std::vector<int>>{{-1}, {m.vertexCount()}, {3, 7, 3}, {0, 1, 2, 3, 4, 5}}) {
+    p.initialSamples = bad;
+    const auto r = farthestPointSampling(m, Metric::uniform(), p);
+    EXPECT_EQ(r.status().code, StatusCode::InvalidInput) << bad.size();
+  }
+  // A vertex in no face is no sample.
+  TriMesh withLoose = test::planeGrid(4);
+  withLoose.positions.push_back(Vec3(5.0, 5.0, 5.0));
+  const Expected<TriMesh> loose = buildTriMesh(withLoose.positions, withLoose.triangles);
+  ASSERT_TRUE(loose);
+  p.initialSamples = {loose->vertexCount() - 1};
+  EXPECT_EQ(farthestPointSampling(*loose, Metric::uniform(), p).status().code, StatusCode::InvalidInput);
+}
+
 TEST(FarthestPointSampling, FormsANet) {
   const TriMesh m = test::loadRealMesh("bunny00.off");
   FpsParams params;

@@ -188,32 +188,6 @@ void completeBetween(Eigen::MatrixXd& between, double limit) {
 /// well in 3D; where it curls back on itself, the geodesic sampling fills what the 3D one left.
 constexpr int kBasesPer3dBase = 16;
 
-/// `count` vertices in faces by greedy farthest-point sampling in the straight 3D distance, the
-/// first the farthest from a start vertex chosen by `seed`.
-std::vector<int> farthestIn3d(const TriMesh& patch, int count, unsigned seed) {
-  const int n = patch.vertexCount();
-  int start = static_cast<int>(seed % static_cast<unsigned>(n));
-  while (patch.valence(start) == 0) start = (start + 1) % n;
-  std::vector<double> d2(n, kUnreached);  // squared distance to the nearest chosen vertex
-  const auto farthestFrom = [&](const Vec3& p) {
-    int far = -1;
-    for (int v = 0; v < n; ++v) {
-      if (patch.valence(v) == 0) continue;
-      d2[v] = std::min(d2[v], (patch.positions[v] - p).squaredNorm());
-      if (far < 0 || d2[v] > d2[far]) far = v;
-    }
-    return far;
-  };
-  int next = farthestFrom(patch.positions[start]);
-  std::fill(d2.begin(), d2.end(), kUnreached);
-  std::vector<int> chosen;
-  while (static_cast<int>(chosen.size()) < count && next >= 0 && d2[next] > 0.0) {
-    chosen.push_back(next);
-    next = farthestFrom(patch.positions[next]);
-  }
-  return chosen;
-}
-
 /// Bases one edge inside the border move onto it (to their nearest border neighbour that is not a
 /// base): the border vertices beside such a base see it an edge away and the other bases far on
 /// one side, and their extension folds (a 10k spherical cap: 4 faces beside two such bases).
@@ -247,7 +221,7 @@ Expected<BaseField> baseDistances(const TriMesh& patch, const LleFlatteningParam
   fps.targetCount = p.basePoints;
   fps.seed = p.seed;
   fps.boundaryPriority = 1.0;
-  fps.initialSamples = farthestIn3d(patch, std::max(1, p.basePoints / kBasesPer3dBase), p.seed);
+  fps.initialSamples = farthestPointsIn3d(patch, std::max(1, p.basePoints / kBasesPer3dBase), p.seed);
   Expected<FpsResult> sampled = farthestPointSampling(marcher, fps, progress.sub(0.0, 0.1));
   if (!sampled) return sampled.status();
   f.base = sampled->samples;

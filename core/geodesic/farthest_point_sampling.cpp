@@ -252,6 +252,31 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
   return r;
 }
 
+std::vector<int> farthestPointsIn3d(const TriMesh& mesh, int count, unsigned seed) {
+  const int n = mesh.vertexCount();
+  if (count <= 0 || usableVertexCount(mesh) == 0) return {};
+  int start = static_cast<int>(seed % static_cast<unsigned>(n));
+  while (mesh.valence(start) == 0) start = (start + 1) % n;
+  std::vector<double> d2(n, kUnreached);  // squared distance to the nearest chosen vertex
+  const auto farthestFrom = [&](const Vec3& p) {
+    int far = -1;
+    for (int v = 0; v < n; ++v) {
+      if (mesh.valence(v) == 0) continue;
+      d2[v] = std::min(d2[v], (mesh.positions[v] - p).squaredNorm());
+      if (far < 0 || d2[v] > d2[far]) far = v;
+    }
+    return far;
+  };
+  int next = farthestFrom(mesh.positions[start]);
+  std::fill(d2.begin(), d2.end(), kUnreached);
+  std::vector<int> chosen;
+  while (static_cast<int>(chosen.size()) < count && next >= 0 && d2[next] > 0.0) {
+    chosen.push_back(next);
+    next = farthestFrom(mesh.positions[next]);
+  }
+  return chosen;
+}
+
 Expected<FpsResult> samplingPrefix(FastMarcher& marcher, const FpsResult& longer, int count) {
   if (count < 1 || count > static_cast<int>(longer.samples.size()))
     return invalidInput("a prefix of " + std::to_string(count) + " samples of a sampling of " +

@@ -66,6 +66,13 @@ Expected<FpsResult> farthestPointSampling(const TriMesh& mesh, const Metric& met
 /// samples, each the source of its own cell (its index), so the next stage (geodesicDelaunay) can go on from it.
 Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams& params = {}, Progress progress = {});
 
+/// At most `count` vertices in faces by greedy farthest-point sampling in the straight 3D distance
+/// (O(count V)), the first the farthest from a start vertex chosen by `seed`; fewer when every vertex
+/// is taken. Initial samples for farthestPointSampling (FpsParams::initialSamples): a surface's
+/// extremities are found as well in 3D, and the geodesic sampling fills what a 3D one leaves where
+/// the surface curls back on itself.
+std::vector<int> farthestPointsIn3d(const TriMesh& mesh, int count, unsigned seed = 0);
+
 /// The sampling of `count` samples (1 <= count <= longer.samples.size()) with the parameters that
 /// gave `longer` on the same engine, without sampling again: greedy sampling chooses each sample
 /// from the ones before it alone, so its first `count` samples are that sampling. One

@@ -15,6 +15,14 @@ namespace {
 
 /// Rounds of giving stray pieces to their neighbours (each round at least halves them in practice).
 constexpr int kStrayRounds = 16;
+/// The first seeds are chosen in 3D (farthestPointsIn3d), one in kSeedsPerSeedIn3d of them and at
+/// most kSeedsIn3d; the geodesic farthest-point sampling goes on from their field. The first fronts
+/// of a greedy sampling are its dearest (each covers much of the surface): the subdivided armadillo
+/// (1.66M vertices, 1,000 regions, 10 iterations) 19.3 -> 17.6 s, area CV 0.383 -> 0.366,
+/// isoperimetric quotient 0.652 -> 0.654. A small share only: where the seeds are few, their
+/// layout is the sampling's (fandisk at 50 regions, 16 seeds in 3D: on sharp edges 0.542 -> 0.513).
+constexpr int kSeedsPerSeedIn3d = 64;
+constexpr int kSeedsIn3d = 16;
 
 /// Faces grouped by region (CSR): faces of region r are order[begin[r] .. begin[r + 1]).
 struct FacesByRegion {
@@ -327,6 +335,8 @@ Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vect
   fps.targetCount = params.regions;
   fps.seed = params.seed;
   fps.boundaryPriority = 1.0;  // seeds are cell centres, not outline samples
+  fps.initialSamples =
+      farthestPointsIn3d(marcher.mesh(), std::min(kSeedsIn3d, params.regions / kSeedsPerSeedIn3d), params.seed);
   Expected<FpsResult> sampled = farthestPointSampling(marcher, fps, progress.sub(0.1, 0.15));
   if (!sampled) return sampled.status();
   std::vector<SurfacePoint> seeds = sampled->origin;

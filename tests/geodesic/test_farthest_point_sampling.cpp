@@ -135,6 +135,28 @@ TEST(FarthestPointSampling, InitialSamplesOnOneComponentLeaveNoneUnsampled) {
   for (int v = 0; v < m.vertexCount(); ++v) ASSERT_TRUE(std::isfinite(r->distance[v])) << v;
 }
 
+// The 3D sampling against a brute-force recomputation: the first vertex is the farthest (in 3D)
+// from the seeded start, each next one the farthest from all before it; it stops when every vertex
+// is taken.
+TEST(FarthestPointSampling, In3dEachVertexIsTheFarthestFromTheEarlierOnes) {
+  const TriMesh m = test::loadRealMesh("fandisk.off");
+  const std::vector<int> chosen = farthestPointsIn3d(m, 25, 7);
+  ASSERT_EQ(chosen.size(), 25u);
+  const auto nearest = [&](int v, size_t k) {
+    double best = kUnreached;
+    for (size_t i = 0; i < k; ++i) best = std::min(best, (m.positions[v] - m.positions[chosen[i]]).norm());
+    return k == 0 ? (m.positions[v] - m.positions[7]).norm() : best;
+  };
+  for (size_t k = 0; k < chosen.size(); ++k) {
+    double farthest = 0.0;
+    for (int v = 0; v < m.vertexCount(); ++v) farthest = std::max(farthest, nearest(v, k));
+    EXPECT_EQ(nearest(chosen[k], k), farthest) << "vertex " << k;
+  }
+  const TriMesh small = test::planeGrid(2);  // 9 vertices
+  EXPECT_EQ(farthestPointsIn3d(small, 20).size(), 9u);
+  EXPECT_TRUE(farthestPointsIn3d(small, 0).empty());
+}
+
 TEST(FarthestPointSampling, RejectsBadInitialSamples) {
   const TriMesh m = test::planeGrid(4);
   FpsParams p;

@@ -18,9 +18,10 @@ constexpr int kStrayRounds = 16;
 /// The first seeds are chosen in 3D (farthestPointsIn3d), one in kSeedsPerSeedIn3d of them and at
 /// most kSeedsIn3d; the geodesic farthest-point sampling goes on from their field. The first fronts
 /// of a greedy sampling are its dearest (each covers much of the surface): the subdivided armadillo
-/// (1.66M vertices, 1,000 regions, 10 iterations) 19.3 -> 17.6 s, area CV 0.383 -> 0.366,
-/// isoperimetric quotient 0.652 -> 0.654. A small share only: where the seeds are few, their
-/// layout is the sampling's (fandisk at 50 regions, 16 seeds in 3D: on sharp edges 0.542 -> 0.513).
+/// (1.66M vertices, 1,000 regions, 10 iterations, medians of 3) 20.1 -> 17.2 s, area CV 0.383 ->
+/// 0.385, isoperimetric quotient 0.652 -> 0.651. A small share only: where the seeds are few,
+/// their layout is the sampling's (fandisk at 50 regions, 16 seeds in 3D: on sharp edges 0.542 ->
+/// 0.513).
 constexpr int kSeedsPerSeedIn3d = 64;
 constexpr int kSeedsIn3d = 16;
 

@@ -1,8 +1,11 @@
 // Geodesic LLE flattening of a disk with a Nyström extension (Peyré & Cohen 2006, §4.3): a map
 // of a patch to the plane without a linear system over all its vertices.
 //
-//   patch (a topological disk) --farthestPointSampling--> B base points
-//     --B fronts (FastMarcher), each stopped at 2.5 covering radii of the sampling (farther where a
+//   patch (a topological disk) --farthestPointSampling, its first B/16 samples chosen in 3D
+//     (farthestPointsIn3d: the greedy sampling's first fronts are its dearest)--> B base points;
+//     bases one edge inside the boundary move onto it (the boundary vertices beside them would
+//     see them an edge away and the other bases far on one side, and fold)
+//     --B fronts (FastMarcher), each stopped at 2.3 covering radii of the sampling (farther where a
 //       vertex sees fewer than 4 bases)--> d(v, base j) for the bases near each vertex v; between
 //       bases, the fronts' own values, else the least d(v, i) + d(v, j) over the vertices both
 //       reached, else shortest paths through the bases' graph
@@ -33,7 +36,8 @@
 // ARAP, 1.251 with the regulariser 1e-3 and no stress, smoothing or ARAP step).
 //
 // Boundary: Free (LLE's own) or Circle (Tutte's embedding from the start). Cost: B fronts over
-// about a tenth of the patch each (at most B whole fronts, O(B V log V)), the Nyström extension
+// about a tenth of the patch each (at most B whole fronts, O(B V log V)), the 3D start O(B V / 16),
+// the Nyström extension
 // O(V K^3), the eigenproblem and the bases' graph O(B^3); the Tutte fallback one sparse solve; the
 // ARAP relaxation one sparse factorisation and a back-substitution per round.
 #pragma once

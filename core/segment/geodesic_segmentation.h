@@ -4,7 +4,8 @@
 //   mesh --adaptiveMetric (total curvature or a given field, Attractive: the paper's F2 "edge
 //          attractive" speed 1/(1 + mu tau/s), which freezes fronts at sharp edges)--> metric
 //        --prepareGeodesicSurface (the input as it is, by default)
-//        --farthestPointSampling (`regions` seeds) --geodesicLloyd (`iterations`)--> cells
+//        --farthestPointSampling (`regions` seeds; the first regions/64 of them, at most 16,
+//          chosen in 3D: farthestPointsIn3d) --geodesicLloyd (`iterations`)--> cells
 //        --faces labelled by their vertices' cells (the majority; three different: the vertex
 //          nearest its seed), each label's stray pieces given to the neighbour they share most
 //          edges with, so every region is one edge-connected piece

@@ -26,6 +26,7 @@ ALLOWED = {
     "segment": {"base", "mesh", "geodesic", "field", "measure"},
     "flatten": {"base", "mesh", "geodesic", "measure"},
     "atlas": {"base", "mesh", "geodesic", "field", "measure", "segment", "flatten"},
+    "param": {"base", "mesh", "geodesic", "field", "measure", "remesh"},
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]', re.M)
 MESHLAB_OR_QT = re.compile(r"^(common/|Q[A-Za-z]+$|Qt[A-Za-z]*/|GL/)")

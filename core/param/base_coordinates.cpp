@@ -20,8 +20,10 @@ Status checkBase(const TriMesh& input, const std::vector<Tri>& base, const std::
   std::vector<char> taken(input.vertexCount(), 0);
   for (int v : baseVertex) {
     if (v < 0 || v >= input.vertexCount() || input.valence(v) == 0)
-      return invalidInput("base coordinates: a base vertex (" + std::to_string(v) + ") is not an input vertex in a face");
-    if (taken[v]++) return invalidInput("base coordinates: input vertex " + std::to_string(v) + " is two base vertices");
+      return invalidInput("base coordinates: a base vertex (" + std::to_string(v) +
+                          ") is not an input vertex in a face");
+    if (taken[v]++)
+      return invalidInput("base coordinates: input vertex " + std::to_string(v) + " is two base vertices");
   }
   for (const Tri& t : base)
     for (int i : t)
@@ -34,7 +36,7 @@ Status checkBase(const TriMesh& input, const std::vector<Tri>& base, const std::
 /// the length of the opposite edge (from the fronts of its two ends, the smaller).
 struct Fronts {
   std::vector<std::vector<std::pair<int, double>>> reached;  // per base vertex
-  std::vector<double> edgeLength;                          // per base corner
+  std::vector<double> edgeLength;                            // per base corner
 };
 
 Expected<Fronts> runFronts(const TriMesh& input, const std::vector<Tri>& base, const std::vector<int>& baseVertex) {
@@ -109,7 +111,8 @@ Expected<BaseCoordinatesResult> baseCoordinates(const TriMesh& input, const std:
       for (int t : trianglesAt[seen[k].first]) {
         const Tri& tri = base[t];
         const double* side = r.edgeLength.data() + 3 * t;  // opposite corners 0, 1, 2: bc, ca, ab
-        const HeronCoordinates h = heronCoordinates(dist[tri[0]], dist[tri[1]], dist[tri[2]], side[2], side[0], side[1]);
+        const HeronCoordinates h =
+            heronCoordinates(dist[tri[0]], dist[tri[1]], dist[tri[2]], side[2], side[0], side[1]);
         if (h.valid && h.excess < r.excess[v]) {
           r.excess[v] = h.excess;
           r.triangle[v] = t;

@@ -27,10 +27,10 @@ struct BaseCoordinatesResult {
   /// fronts stop at twice their longest straight base edge: a base edge whose geodesic is longer
   /// than that, on a surface folded between its ends, has no length).
   std::vector<int> triangle;
-  std::vector<Vec3> weights;        ///< per input vertex, of the triangle's corners (in its order)
-  std::vector<double> excess;       ///< per input vertex, Heron's excess there (0 inside a flat triangle)
-  std::vector<double> edgeLength;   ///< per base corner c (3 t + k): the geodesic length of the edge opposite it
-  int unassigned = 0;               ///< input vertices in faces left at -1
+  std::vector<Vec3> weights;       ///< per input vertex, of the triangle's corners (in its order)
+  std::vector<double> excess;      ///< per input vertex, Heron's excess there (0 inside a flat triangle)
+  std::vector<double> edgeLength;  ///< per base corner c (3 t + k): the geodesic length of the edge opposite it
+  int unassigned = 0;              ///< input vertices in faces left at -1
 };
 
 /// `base`: triangles over base vertices 0..B-1; `baseVertex[i]`: the input vertex base vertex i is

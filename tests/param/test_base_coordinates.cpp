@@ -72,8 +72,9 @@ TEST_P(BaseCoordinatesOnAPlane, EachVertexInTheTriangleThatHoldsIt) {
       if (r->triangle[v] == static_cast<int>(t)) worst = std::max(worst, (r->weights[v] - exact).cwiseAbs().maxCoeff());
     }
   }
-  std::printf("plane, jitter %.1f: %d of %d vertices away from the base edges in the right triangle, weights within %.4f\n",
-              GetParam(), right, inside, worst);
+  std::printf(
+      "plane, jitter %.1f: %d of %d vertices away from the base edges in the right triangle, weights within %.4f\n",
+      GetParam(), right, inside, worst);
   EXPECT_GT(inside, 300);
   EXPECT_EQ(right, inside);
   EXPECT_LT(worst, 0.005);  // measured 1e-4 on the jittered grid, 0 on the regular one

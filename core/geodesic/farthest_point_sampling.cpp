@@ -96,13 +96,20 @@ Status checkFpsParams(const TriMesh& mesh, const FpsParams& params) {
   return Status::ok();
 }
 
+/// The vertex a sampling starts from: `seed` modulo the vertex count, else the next vertex in a face
+/// (the mesh has one).
+int startVertex(const TriMesh& mesh, unsigned seed) {
+  int start = static_cast<int>(seed % static_cast<unsigned>(mesh.vertexCount()));
+  while (mesh.valence(start) == 0) start = (start + 1) % mesh.vertexCount();
+  return start;
+}
+
 /// The first sample: the vertex farthest from a start vertex in a face chosen by `seed`. Leaves
 /// the marcher reset.
 Expected<int> firstSample(FastMarcher& marcher, unsigned seed) {
   const TriMesh& mesh = marcher.mesh();
   marcher.reset();
-  int start = static_cast<int>(seed % static_cast<unsigned>(mesh.vertexCount()));
-  while (mesh.valence(start) == 0) start = (start + 1) % mesh.vertexCount();
+  const int start = startVertex(mesh, seed);
   if (Status s = marcher.addSource(start, 0); !s) return s;
   if (Status s = marcher.propagate(); !s) return s;
   int first = start;
@@ -255,8 +262,7 @@ Expected<FpsResult> farthestPointSampling(FastMarcher& marcher, const FpsParams&
 std::vector<int> farthestPointsIn3d(const TriMesh& mesh, int count, unsigned seed) {
   const int n = mesh.vertexCount();
   if (count <= 0 || usableVertexCount(mesh) == 0) return {};
-  int start = static_cast<int>(seed % static_cast<unsigned>(n));
-  while (mesh.valence(start) == 0) start = (start + 1) % n;
+  const int start = startVertex(mesh, seed);
   std::vector<double> d2(n, kUnreached);  // squared distance to the nearest chosen vertex
   const auto farthestFrom = [&](const Vec3& p) {
     int far = -1;

@@ -105,10 +105,13 @@ Expected<BaseCoordinatesResult> baseCoordinates(const TriMesh& input, const std:
   r.excess.assign(n, kUnreached);
   r.edgeLength = fronts->edgeLength;
   std::vector<double> dist(nb, kUnreached);
+  std::vector<int> triedFor(base.size(), -1);  // the input vertex a triangle was last evaluated for
   for (int v = 0; v < n; ++v) {
     for (int k = begin[v]; k < begin[v + 1]; ++k) dist[seen[k].first] = seen[k].second;
     for (int k = begin[v]; k < begin[v + 1]; ++k)
       for (int t : trianglesAt[seen[k].first]) {
+        if (triedFor[t] == v) continue;  // reached through another of its corners
+        triedFor[t] = v;
         const Tri& tri = base[t];
         const double* side = r.edgeLength.data() + 3 * t;  // opposite corners 0, 1, 2: bc, ca, ab
         const HeronCoordinates h =

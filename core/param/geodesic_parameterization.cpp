@@ -1,0 +1,280 @@
+#include "core/param/geodesic_parameterization.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/SparseLU>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/geodesic/fast_marching.h"
+#include "core/geodesic/metric.h"
+#include "core/mesh/orientation.h"
+#include "core/param/geodesic_barycentric.h"
+
+namespace gr {
+namespace {
+
+/// A piece of the cut surface: its faces, vertices (with, per vertex, its distance to the base
+/// triangle's three corners) and boundary loop from corner 0.
+struct Piece {
+  std::vector<int> faces;
+  std::vector<int> vertices;
+  std::vector<std::array<double, 3>> distance;  // per entry of `vertices`
+  std::vector<int> loop;                        // boundary vertices, counter-clockwise from corner 0
+};
+
+std::vector<Piece> collectPieces(const BasePieces& cut, const BaseDomain& base) {
+  const TriMesh& mesh = cut.mesh;
+  std::vector<Piece> pieces(base.triangles.size());
+  for (int f = 0; f < mesh.faceCount(); ++f) pieces[cut.triangle[f]].faces.push_back(f);
+  std::vector<int> seen(mesh.vertexCount(), -1);
+  for (size_t t = 0; t < pieces.size(); ++t) {
+    Piece& p = pieces[t];
+    const int v0 = base.baseVertex[base.triangles[t][0]];
+    int start = -1;
+    for (int f : p.faces)
+      for (int c = 3 * f; c < 3 * f + 3; ++c) {
+        if (seen[mesh.vertex(c)] != static_cast<int>(t)) {
+          seen[mesh.vertex(c)] = static_cast<int>(t);
+          p.vertices.push_back(mesh.vertex(c));
+        }
+        if (cut.onCut[c] && mesh.vertex(TriMesh::next(c)) == v0) start = c;
+      }
+    p.distance.assign(p.vertices.size(), {kUnreached, kUnreached, kUnreached});
+    p.loop.push_back(v0);
+    for (int c = start;;) {  // the loop walk of base_pieces.cpp's assignPieces
+      const int b = mesh.vertex(TriMesh::prev(c));
+      if (b == v0) break;
+      p.loop.push_back(b);
+      int k = TriMesh::next(c);
+      while (!cut.onCut[k]) k = TriMesh::next(mesh.oppositeCorner[k]);
+      c = k;
+    }
+  }
+  return pieces;
+}
+
+/// One front per base vertex on the cut surface, until it has reached every vertex of its pieces:
+/// fills the pieces' distances and returns the base edges' lengths (the smaller way; +inf if unmet).
+Expected<std::vector<double>> runFronts(const BasePieces& cut, const BaseDomain& base, std::vector<Piece>& pieces,
+                                        Progress progress) {
+  const int nb = static_cast<int>(base.baseVertex.size());
+  std::vector<std::vector<std::pair<int, int>>> star(nb);  // per base vertex: (triangle, its corner)
+  for (size_t t = 0; t < base.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) star[base.triangles[t][k]].emplace_back(static_cast<int>(t), k);
+  std::vector<double> length(cut.edges.size(), kUnreached);
+  const Metric metric = Metric::uniform();
+  FastMarcher marcher(cut.mesh, metric);
+  for (int i = 0; i < nb; ++i) {
+    if (!progress.report(static_cast<double>(i) / nb, "Geodesic distances to the base vertices")) return cancelled();
+    FastMarchingParams limit;
+    for (const auto& [t, k] : star[i])
+      limit.targets.insert(limit.targets.end(), pieces[t].vertices.begin(), pieces[t].vertices.end());
+    marcher.reset();
+    if (Status s = marcher.addSource(base.baseVertex[i], 0); !s) return s;
+    if (Status s = marcher.propagate(limit); !s) return s;
+    const std::vector<double>& d = marcher.distance();
+    for (const auto& [t, k] : star[i]) {
+      Piece& p = pieces[t];
+      for (size_t l = 0; l < p.vertices.size(); ++l) p.distance[l][k] = d[p.vertices[l]];
+      for (int m = 1; m < 3; ++m) {  // the edges from i to the triangle's other corners
+        const int j = base.triangles[t][(k + m) % 3];
+        const int e = cut.triangleEdge[t][(k + 3 - m) % 3];
+        length[e] = std::min(length[e], d[base.baseVertex[j]]);
+      }
+    }
+  }
+  return length;
+}
+
+double pathLength(const TriMesh& mesh, const std::vector<int>& path) {
+  double s = 0.0;
+  for (size_t k = 0; k + 1 < path.size(); ++k) s += (mesh.positions[path[k]] - mesh.positions[path[k + 1]]).norm();
+  return s;
+}
+
+/// Per vertex of a piece's loop, its point on the domain's sides, by arc length between corners.
+void pinSides(const TriMesh& mesh, const Piece& p, const std::vector<int>& cornerAt, const std::array<Vec2, 3>& q,
+              std::vector<Vec2>& uvOf, const std::vector<int>& local) {
+  const int n = static_cast<int>(p.loop.size());
+  for (int s = 0; s < 3; ++s) {
+    const int from = cornerAt[s], to = s == 2 ? n : cornerAt[s + 1];
+    double total = 0.0;
+    for (int k = from; k < to; ++k) total += (mesh.positions[p.loop[k]] - mesh.positions[p.loop[(k + 1) % n]]).norm();
+    double run = 0.0;
+    for (int k = from; k < to; ++k) {
+      const double t = total > 0.0 ? run / total : 0.0;
+      uvOf[local[p.loop[k]]] = q[s] + t * (q[(s + 1) % 3] - q[s]);
+      run += (mesh.positions[p.loop[k]] - mesh.positions[p.loop[(k + 1) % n]]).norm();
+    }
+  }
+}
+
+double signedArea(const Vec2& a, const Vec2& b, const Vec2& c) {
+  return 0.5 * ((b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x()));
+}
+
+bool folded(const TriMesh& mesh, const Piece& p, const std::vector<Vec2>& uvOf, const std::vector<int>& local,
+            double domainArea) {
+  const double tiny = 1e-14 * domainArea;
+  for (int f : p.faces) {
+    const Tri& t = mesh.triangles[f];
+    if (!(signedArea(uvOf[local[t[0]]], uvOf[local[t[1]]], uvOf[local[t[2]]]) > tiny)) return true;
+  }
+  return false;
+}
+
+/// The interior vertices placed by mean value coordinates (Floater 2003) with the loop fixed, or
+/// with `uniform`, by Tutte's (every weight 1): both one-to-one in exact arithmetic; Tutte's
+/// also where degenerate faces leave a mean value weight undefined.
+Status meanValueMap(const TriMesh& mesh, const Piece& p, const std::vector<char>& inside, std::vector<Vec2>& uvOf,
+                    const std::vector<int>& local, bool uniform) {
+  std::vector<int> unknown(p.vertices.size(), -1);
+  int n = 0;
+  for (size_t l = 0; l < p.vertices.size(); ++l)
+    if (inside[l]) unknown[l] = n++;
+  if (n == 0) return Status::ok();
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixX2d rhs = Eigen::MatrixX2d::Zero(n, 2);
+  for (size_t l = 0; l < p.vertices.size(); ++l) {
+    if (!inside[l]) continue;
+    const int v = p.vertices[l], row = unknown[l];
+    const Vec3& pv = mesh.positions[v];
+    double diagonal = 0.0;
+    auto add = [&](int w, double weight) {
+      diagonal += weight;
+      const int lw = local[w];
+      if (unknown[lw] >= 0)
+        entries.emplace_back(row, unknown[lw], -weight);
+      else
+        rhs.row(row) += weight * uvOf[lw].transpose();
+    };
+    for (const int* c = mesh.cornersBegin(v); c != mesh.cornersEnd(v); ++c) {
+      const int a = mesh.vertex(TriMesh::next(*c)), b = mesh.vertex(TriMesh::prev(*c));
+      const Vec3 e1 = mesh.positions[a] - pv, e2 = mesh.positions[b] - pv;
+      const double l1 = e1.norm(), l2 = e2.norm();
+      const double halfTan = e1.cross(e2).norm() / (l1 * l2 + e1.dot(e2));
+      const double w1 = halfTan / l1, w2 = halfTan / l2;
+      const bool usable = !uniform && std::isfinite(w1) && std::isfinite(w2) && w1 > 0.0 && w2 > 0.0;
+      add(a, usable ? w1 : 1.0);
+      add(b, usable ? w2 : 1.0);
+    }
+    entries.emplace_back(row, row, diagonal);
+  }
+  Eigen::SparseMatrix<double> a(n, n);
+  a.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+  lu.compute(a);
+  if (lu.info() != Eigen::Success)
+    return internalError("geodesic parameterisation: a piece's mean value system is singular");
+  const Eigen::MatrixX2d x = lu.solve(rhs);
+  for (size_t l = 0; l < p.vertices.size(); ++l)
+    if (inside[l]) uvOf[l] = x.row(unknown[l]).transpose();
+  return Status::ok();
+}
+
+struct PieceOutcome {
+  bool heron = false;
+  bool repaired = false;
+};
+
+/// Maps piece t onto its domain; writes the corners' (u, v).
+Expected<PieceOutcome> mapPiece(const Parameterization& par, const Piece& p, int t, const std::array<Vec2, 3>& q,
+                                std::vector<int>& local, std::vector<Vec2>& cornerUv) {
+  const TriMesh& mesh = par.pieces.mesh;
+  const Tri& bt = par.base.triangles[t];
+  for (size_t l = 0; l < p.vertices.size(); ++l) local[p.vertices[l]] = static_cast<int>(l);
+  std::vector<int> cornerAt(3, -1);
+  std::vector<char> inside(p.vertices.size(), 1);
+  for (size_t k = 0; k < p.loop.size(); ++k) {
+    inside[local[p.loop[k]]] = 0;
+    for (int c = 0; c < 3; ++c)
+      if (p.loop[k] == par.base.baseVertex[bt[c]]) cornerAt[c] = static_cast<int>(k);
+  }
+  std::vector<Vec2> uvOf(p.vertices.size(), Vec2::Zero());
+  pinSides(mesh, p, cornerAt, q, uvOf, local);
+  const std::array<int, 3>& te = par.pieces.triangleEdge[t];  // edges facing corners 0, 1, 2
+  const double l12 = par.edgeLength[te[0]], l20 = par.edgeLength[te[1]], l01 = par.edgeLength[te[2]];
+  PieceOutcome out;
+  out.heron = true;
+  for (size_t l = 0; l < p.vertices.size(); ++l) {
+    if (!inside[l]) continue;
+    const auto& d = p.distance[l];
+    const HeronCoordinates h = heronCoordinates(d[0], d[1], d[2], l01, l12, l20);
+    if (!h.valid) out.heron = false;
+    uvOf[l] = h.weights[0] * q[0] + h.weights[1] * q[1] + h.weights[2] * q[2];
+  }
+  const double area = signedArea(q[0], q[1], q[2]);
+  if (!out.heron || folded(mesh, p, uvOf, local, area)) {
+    out.heron = false;
+    out.repaired = true;
+    if (Status s = meanValueMap(mesh, p, inside, uvOf, local, false); !s || folded(mesh, p, uvOf, local, area))
+      if (Status u = meanValueMap(mesh, p, inside, uvOf, local, true); !u) return u;
+    if (folded(mesh, p, uvOf, local, area))
+      return internalError("geodesic parameterisation: the piece of base triangle " + std::to_string(t) +
+                           " is folded after its mean value map");
+  }
+  Eigen::Matrix2d frame;
+  frame << q[1] - q[0], q[2] - q[0];
+  const Eigen::Matrix2d inverse = frame.inverse();
+  for (int f : p.faces)
+    for (int k = 0; k < 3; ++k) cornerUv[3 * f + k] = inverse * (uvOf[local[mesh.triangles[f][k]]] - q[0]);
+  return out;
+}
+
+}  // namespace
+
+/// Below this shape quality a base triangle's domain is the equilateral triangle: three base
+/// vertices along a straight boundary have geodesic sides that make a flat triangle, onto which
+/// no map of their piece is one-to-one.
+constexpr double kFlatDomain = 0.05;
+
+std::array<Vec2, 3> triangleDomain(double l01, double l12, double l20) {
+  // Shape quality 4 sqrt(3) area / (sum of squared sides): 1 for the equilateral triangle.
+  const double quality = 4.0 * std::sqrt(3.0) * heronArea(l01, l12, l20) / (l01 * l01 + l12 * l12 + l20 * l20);
+  if (!(quality > kFlatDomain)) {
+    const double s = (std::isfinite(l01 + l12 + l20) && l01 + l12 + l20 > 0.0) ? (l01 + l12 + l20) / 3.0 : 1.0;
+    return {Vec2(0.0, 0.0), Vec2(s, 0.0), Vec2(0.5 * s, std::sqrt(0.75) * s)};
+  }
+  const double x = (l01 * l01 + l20 * l20 - l12 * l12) / (2.0 * l01);
+  return {Vec2(0.0, 0.0), Vec2(l01, 0.0), Vec2(x, std::sqrt(std::max(0.0, l20 * l20 - x * x)))};
+}
+
+Expected<Parameterization> parameterizeOverBase(const TriMesh& input, const ParameterizationParams& params,
+                                                Progress progress) {
+  if (input.faceCount() == 0) return invalidInput("geodesic parameterisation: the mesh has no faces");
+  if (!input.topology.isManifold())
+    return nonManifold("geodesic parameterisation: the mesh has " + input.topology.nonManifoldCounts());
+  Expected<TriMesh> oriented = orientCoherently(input);
+  if (!oriented) return oriented.status();
+  Parameterization par;
+  par.input = std::move(*oriented);
+  Expected<BaseDomain> base = buildBaseDomain(par.input, params.base, progress.sub(0.0, 0.4));
+  if (!base) return base.status();
+  par.base = std::move(*base);
+  Expected<BasePieces> cut = cutIntoBasePieces(par.input, par.base, progress.sub(0.4, 0.6));
+  if (!cut) return cut.status();
+  par.pieces = std::move(*cut);
+  std::vector<Piece> pieces = collectPieces(par.pieces, par.base);
+  Expected<std::vector<double>> lengths = runFronts(par.pieces, par.base, pieces, progress.sub(0.6, 0.9));
+  if (!lengths) return lengths.status();
+  par.edgeLength = std::move(*lengths);
+  for (size_t e = 0; e < par.edgeLength.size(); ++e)
+    if (!std::isfinite(par.edgeLength[e])) par.edgeLength[e] = pathLength(par.pieces.mesh, par.pieces.path[e]);
+  par.cornerUv.assign(3 * par.pieces.mesh.faceCount(), Vec2::Zero());
+  std::vector<int> local(par.pieces.mesh.vertexCount(), -1);
+  for (size_t t = 0; t < pieces.size(); ++t) {
+    if (!progress.report(0.9 + 0.1 * t / pieces.size(), "Mapping the pieces onto their base triangles"))
+      return cancelled();
+    const std::array<int, 3>& te = par.pieces.triangleEdge[t];
+    const std::array<Vec2, 3> q = triangleDomain(par.edgeLength[te[2]], par.edgeLength[te[0]], par.edgeLength[te[1]]);
+    Expected<PieceOutcome> mapped = mapPiece(par, pieces[t], static_cast<int>(t), q, local, par.cornerUv);
+    if (!mapped) return mapped.status();
+    par.heronPieces += mapped->heron;
+    par.repairedPieces += mapped->repaired;
+  }
+  return par;
+}
+
+}  // namespace gr

@@ -1,9 +1,6 @@
 #include "filter_geodesic_remesh/atlas_filter.h"
 
 #include <vcg/complex/append.h>
-#include <QDir>
-#include <QFileInfo>
-#include <QImage>
 
 #include <chrono>
 #include <string>
@@ -18,22 +15,6 @@ namespace {
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-/// A checkerboard of 32 x 32 squares, written next to the mesh's file (or in the temporary folder
-/// for a mesh without one): the absolute path, or an empty string if it could not be written.
-std::string writeCheckerboard(const MeshModel& mm, int size) {
-  QImage image(size, size, QImage::Format_RGB32);
-  const int square = std::max(1, size / 32);
-  for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x)
-      image.setPixel(x, y, ((x / square + y / square) % 2) ? qRgb(235, 235, 235) : qRgb(60, 90, 160));
-  const QFileInfo mesh(mm.fullName());
-  const QString dir =
-      !mm.fullName().isEmpty() && QFileInfo(mesh.absolutePath()).isWritable() ? mesh.absolutePath() : QDir::tempPath();
-  const QString base = mesh.completeBaseName().isEmpty() ? QString("mesh") : mesh.completeBaseName();
-  const QString path = QDir(dir).absoluteFilePath(base + "_geodesic_atlas.png");
-  return image.save(path, "PNG") ? path.toStdString() : std::string();
 }
 
 void writeWedgeUv(MeshModel& mm, const adapters::CoreView& view, const std::vector<Vec2>& cornerUv) {
@@ -120,7 +101,7 @@ Status applyTextureAtlas(MeshDocument& doc, const RichParameterList& params, Fil
   if (!r) return r.status();
   MeshModel& mm = *current->model;  // commit
   writeWedgeUv(mm, current->view, r->cornerUv);
-  const std::string texture = writeCheckerboard(mm, p.textureSize);
+  const std::string texture = writeCheckerboard(mm, p.textureSize, "_geodesic_atlas.png");
   mm.cm.textures.clear();
   if (!texture.empty()) mm.cm.textures.push_back(texture);
   logAtlas(*r, texture, millisecondsSince(start), ctx);

@@ -24,4 +24,9 @@ Expected<CurrentMesh> currentMesh(MeshDocument& doc);
 /// std::bad_alloc -> OutOfMemory ("out of memory"), any other -> Internal ("internal error: ...").
 Status runCatchingExceptions(const std::function<Status()>& apply);
 
+/// A checkerboard of `squares` x `squares` squares, `size` texels a side, written next to the mesh's file as
+/// <its name><suffix> (or in the temporary folder for a mesh without one): the absolute path, or an
+/// empty string if it could not be written.
+std::string writeCheckerboard(const MeshModel& mm, int size, const std::string& suffix, int squares = 32);
+
 }  // namespace gr::filters

@@ -28,4 +28,8 @@ constexpr const char *kRegions = "Regions", *kIterations = "Iterations", *kFeatu
 constexpr const char *kBasePoints = "BasePoints", *kNeighbours = "Neighbours", *kTextureSize = "TextureSize",
                      *kGutter = "Gutter", *kBoundary = "Boundary", *kFlatLayer = "FlatLayer";
 
+// Remeshing: Geodesic Semi-Regular and Parametrization: Geodesic Barycentric (also Seed and
+// CentroidalIterations above)
+constexpr const char *kBaseVertices = "BaseVertices", *kLevels = "Levels";
+
 }  // namespace gr::filters::param

@@ -246,9 +246,9 @@ Expected<Parameterization> parameterizeOverBase(const TriMesh& input, const Para
   if (input.faceCount() == 0) return invalidInput("geodesic parameterisation: the mesh has no faces");
   if (!input.topology.isManifold())
     return nonManifold("geodesic parameterisation: the mesh has " + input.topology.nonManifoldCounts());
-  Expected<TriMesh> oriented = orientCoherently(input);
-  if (!oriented) return oriented.status();
   Parameterization par;
+  Expected<TriMesh> oriented = orientCoherently(input, &par.flipped);
+  if (!oriented) return oriented.status();
   par.input = std::move(*oriented);
   Expected<BaseDomain> base = buildBaseDomain(par.input, params.base, progress.sub(0.0, 0.4));
   if (!base) return base.status();
@@ -275,6 +275,19 @@ Expected<Parameterization> parameterizeOverBase(const TriMesh& input, const Para
     par.repairedPieces += mapped->repaired;
   }
   return par;
+}
+
+std::vector<Vec2> tiledUv(const Parameterization& par, double margin) {
+  const int nt = static_cast<int>(par.base.triangles.size());
+  const int g = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(nt)))));
+  const double size = (1.0 - 2.0 * margin) / g;
+  std::vector<Vec2> uv(par.cornerUv.size());
+  for (size_t c = 0; c < uv.size(); ++c) {
+    const int t = par.pieces.triangle[c / 3];
+    const Vec2 origin((t % g + margin) / g, (t / g + margin) / g);
+    uv[c] = origin + size * par.cornerUv[c];
+  }
+  return uv;
 }
 
 }  // namespace gr

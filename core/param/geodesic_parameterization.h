@@ -36,9 +36,10 @@ struct ParameterizationParams {
 };
 
 struct Parameterization {
-  TriMesh input;      ///< the input, its faces oriented coherently (orientCoherently)
-  BaseDomain base;    ///< over `input`
-  BasePieces pieces;  ///< the input cut into one disk per base triangle
+  TriMesh input;              ///< the input, its faces oriented coherently (orientCoherently)
+  std::vector<char> flipped;  ///< per input face, 1 if that swapped its corners 1 and 2
+  BaseDomain base;            ///< over `input`
+  BasePieces pieces;          ///< the input cut into one disk per base triangle
   /// Per corner of pieces.mesh, its point in its base triangle (pieces.triangle of its face) as
   /// the coordinates (u, v) of that triangle's corners 1 and 2 (corner 0 weighs 1 - u - v).
   std::vector<Vec2> cornerUv;
@@ -57,5 +58,11 @@ Expected<Parameterization> parameterizeOverBase(const TriMesh& input, const Para
 /// the origin, corner 1 on the x axis, corner 2 above. Lengths that break the triangle inequality
 /// or a flat triangle (shape quality under 0.05) give the equilateral triangle of their mean side.
 std::array<Vec2, 3> triangleDomain(double l01, double l12, double l20);
+
+/// The parameterisation as one texture: base triangle t in square tile (t mod g, t div g) of a
+/// g x g grid (g = ceil(sqrt(triangles))), its corners 0, 1, 2 at the tile's lower left, lower
+/// right and upper left, `margin` (a fraction of the tile) inside. Per corner of pieces.mesh, in
+/// [0, 1]^2: a checkerboard shows each piece's map, one tile per base triangle.
+std::vector<Vec2> tiledUv(const Parameterization& par, double margin = 0.05);
 
 }  // namespace gr

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "core/measure/evaluation.h"
 #include "core/param/geodesic_parameterization.h"
 #include "core/remesh/surface_relaxation.h"
 
@@ -164,6 +165,13 @@ Expected<SemiRegularResult> semiRegularRemesh(const TriMesh& input, const SemiRe
     if (!relaxed) return relaxed.status();
     r.relaxationMoves = relaxed->moves;
   }
+  if (params.measureDistance) {
+    if (!progress.report(0.95, "Measuring the distance to the input")) return cancelled();
+    r.hausdorff = std::max(surfaceDistance(*mesh, par->input).max, surfaceDistance(par->input, *mesh).max);
+  }
+  for (SurfacePoint& p : origin)  // on the input as given: a flipped face has corners 1 and 2 swapped
+    if (p.face >= 0 && par->flipped[p.face]) std::swap(p.bary[1], p.bary[2]);
+  r.reorientedFaces = static_cast<int>(std::count(par->flipped.begin(), par->flipped.end(), 1));
   r.mesh = std::move(*mesh);
   r.origin = std::move(origin);
   r.baseVertices = l.baseVertices;

@@ -35,13 +35,15 @@ struct SemiRegularParams {
   /// points as they are): the points near the base edges, where the pieces' maps meet with
   /// different stretch, move toward their neighbours' mean.
   int relaxationRounds = 3;
+  /// Measure the two-sided Hausdorff distance to the input (surfaceDistance both ways, measure/).
+  bool measureDistance = true;
   static constexpr int kMaxLevels = 6;
   static constexpr double kMaxFaces = 50e6;  ///< larger outputs are refused before any work
 };
 
 struct SemiRegularResult {
   TriMesh mesh;                      ///< the semi-regular mesh, oriented like the input
-  std::vector<SurfacePoint> origin;  ///< per output vertex, its point on the input (oriented as `mesh`'s faces)
+  std::vector<SurfacePoint> origin;  ///< per output vertex, its point on the input (its faces as given)
   int baseVertices = 0;
   int baseTriangles = 0;
   int addedBaseVertices = 0;  ///< by the base domain's repair
@@ -49,6 +51,8 @@ struct SemiRegularResult {
   int heronPieces = 0;        ///< pieces mapped by Heron's coordinates
   int repairedPieces = 0;     ///< pieces mapped by mean value coordinates (Heron's folded)
   int relaxationMoves = 0;
+  int reorientedFaces = 0;  ///< input faces turned to agree with their neighbours
+  double hausdorff = 0.0;   ///< two-sided, vertices, midpoints and centroids of both (measureDistance)
 };
 
 /// Fails with InvalidInput on levels outside 0..kMaxLevels or an output over kMaxFaces faces

@@ -24,6 +24,27 @@ const auto kQualityAndColorClass =
     MeshFilterInterface::FilterClass(MeshFilterInterface::Quality + MeshFilterInterface::VertexColoring);
 constexpr int kWritesQualityAndColor = MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR;
 
+const char* const kSemiRegularInfo =
+    "Remeshes the surface with subdivision connectivity: a geodesic remesh of the surface (farthest-point "
+    "samples and their geodesic Delaunay triangulation) is the base domain; the surface is cut along paths "
+    "between the base vertices into one disk per base triangle, each disk is mapped onto its triangle by "
+    "geodesic barycentric coordinates (Heron's formula on geodesic distances; mean value coordinates where "
+    "those fold), and each base triangle, subdivided 1-to-4 Levels times, is mapped back onto the surface. "
+    "Every vertex that is not a base vertex has valence 6 (4 on a boundary): the input of wavelet "
+    "compression and multiresolution editing. A few rounds of tangential relaxation on the surface follow. "
+    "The result goes to a new layer with the input's topology.<br>See G. Peyr&eacute; and L. Cohen, "
+    "<i>Geodesic Remeshing Using Front Propagation</i>, IJCV 2006, &sect;4.1.";
+
+const char* const kGeodesicBarycentricInfo =
+    "Parameterises the surface over a coarse geodesic remesh of it: the surface is cut along paths between "
+    "the base vertices into one disk per base triangle, and each disk is mapped onto its triangle by geodesic "
+    "barycentric coordinates (Heron's formula on the geodesic distances to the triangle's corners), or by "
+    "mean value coordinates where those fold; every map is checked one-to-one and the pieces tile their "
+    "triangles. Writes a new layer: the input with the edges the cut needed split, the base triangle of each "
+    "vertex in its quality and colour, and per-wedge texture coordinates with one tile of a checkerboard "
+    "texture per base triangle.<br>See G. Peyr&eacute; and L. Cohen, <i>Geodesic Remeshing Using Front "
+    "Propagation</i>, IJCV 2006, &sect;4.1.";
+
 const std::vector<FilterSpec>& filterTable() {
   static const std::vector<FilterSpec> table = {
       {kFastMarching, "Geodesic Distance: Fast Marching from Selected Vertices",
@@ -92,26 +113,9 @@ const std::vector<FilterSpec>& filterTable() {
        "Peyr&eacute; and L. Cohen, <i>Geodesic Remeshing Using Front Propagation</i>, IJCV 2006, &sect;4.3.",
        MeshFilterInterface::FilterClass(MeshFilterInterface::Texture),
        MeshModel::MM_VERTTEXCOORD | MeshModel::MM_WEDGTEXCOORD, declareLleFlattening, applyLleFlattening},
-      {kSemiRegular, "Remeshing: Geodesic Semi-Regular",
-       "Remeshes the surface with subdivision connectivity: a geodesic remesh of the surface (farthest-point "
-       "samples and their geodesic Delaunay triangulation) is the base domain; the surface is cut along paths "
-       "between the base vertices into one disk per base triangle, each disk is mapped onto its triangle by "
-       "geodesic barycentric coordinates (Heron's formula on geodesic distances; mean value coordinates where "
-       "those fold), and each base triangle, subdivided 1-to-4 Levels times, is mapped back onto the surface. "
-       "Every vertex that is not a base vertex has valence 6 (4 on a boundary): the input of wavelet "
-       "compression and multiresolution editing. A few rounds of tangential relaxation on the surface follow. "
-       "The result goes to a new layer with the input's topology.<br>See G. Peyr&eacute; and L. Cohen, "
-       "<i>Geodesic Remeshing Using Front Propagation</i>, IJCV 2006, &sect;4.1.",
-       MeshFilterInterface::Remeshing, kWritesQualityAndColor, declareSemiRegular, applySemiRegular},
-      {kGeodesicBarycentric, "Parametrization: Geodesic Barycentric",
-       "Parameterises the surface over a coarse geodesic remesh of it: the surface is cut along paths between "
-       "the base vertices into one disk per base triangle, and each disk is mapped onto its triangle by geodesic "
-       "barycentric coordinates (Heron's formula on the geodesic distances to the triangle's corners), or by "
-       "mean value coordinates where those fold; every map is checked one-to-one and the pieces tile their "
-       "triangles. Writes a new layer: the input with the edges the cut needed split, the base triangle of each "
-       "vertex in its quality and colour, and per-wedge texture coordinates with one tile of a checkerboard "
-       "texture per base triangle.<br>See G. Peyr&eacute; and L. Cohen, <i>Geodesic Remeshing Using Front "
-       "Propagation</i>, IJCV 2006, &sect;4.1.",
+      {kSemiRegular, "Remeshing: Geodesic Semi-Regular", kSemiRegularInfo, MeshFilterInterface::Remeshing,
+       kWritesQualityAndColor, declareSemiRegular, applySemiRegular},
+      {kGeodesicBarycentric, "Parametrization: Geodesic Barycentric", kGeodesicBarycentricInfo,
        MeshFilterInterface::FilterClass(MeshFilterInterface::Texture),
        kWritesQualityAndColor | MeshModel::MM_WEDGTEXCOORD, declareGeodesicBarycentric, applyGeodesicBarycentric},
   };

@@ -246,6 +246,11 @@ Expected<Parameterization> parameterizeOverBase(const TriMesh& input, const Para
   if (input.faceCount() == 0) return invalidInput("geodesic parameterisation: the mesh has no faces");
   if (!input.topology.isManifold())
     return nonManifold("geodesic parameterisation: the mesh has " + input.topology.nonManifoldCounts());
+  if (const int loose = input.looseFaceCount(); TriMesh::looksLikeTriangleSoup(loose, input.faceCount()))
+    return invalidInput("geodesic parameterisation: " + std::to_string(loose) + " of the " +
+                        std::to_string(input.faceCount()) +
+                        " faces share no edge with another face (a triangle soup, as an STL file read without "
+                        "merging its vertices gives); run 'Cleaning and Repairing > Merge Close Vertices' first");
   Parameterization par;
   Expected<TriMesh> oriented = orientCoherently(input, &par.flipped);
   if (!oriented) return oriented.status();

@@ -48,7 +48,8 @@ struct Parameterization {
   int repairedPieces = 0;          ///< pieces where those flipped a face, mapped by mean value coordinates
 };
 
-/// Fails with InvalidInput (no faces, a triangle soup, a component of zero area), NonManifold, as
+/// Fails with InvalidInput (no faces, a triangle soup: TriMesh::looksLikeTriangleSoup, a component
+/// of zero area), NonManifold, as
 /// buildBaseDomain and cutIntoBasePieces do, or with Internal if a piece is still folded after the
 /// mean value map (a numerical failure; it never happened on the data set).
 Expected<Parameterization> parameterizeOverBase(const TriMesh& input, const ParameterizationParams& params = {},

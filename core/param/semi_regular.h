@@ -42,7 +42,9 @@ struct SemiRegularParams {
 };
 
 struct SemiRegularResult {
-  TriMesh mesh;                      ///< the semi-regular mesh, oriented like the input
+  /// The semi-regular mesh, oriented like the input: vertices 0 .. baseVertices - 1 are the base
+  /// vertices, then the points of the base edges, then those inside the base triangles.
+  TriMesh mesh;
   std::vector<SurfacePoint> origin;  ///< per output vertex, its point on the input (its faces as given)
   int baseVertices = 0;
   int baseTriangles = 0;

@@ -42,6 +42,13 @@ std::string baseLine(int asked, int got, int added, int triangles) {
          " added by the triangulation's repair), " + std::to_string(triangles) + " base triangles";
 }
 
+/// How the pieces were mapped, for the log.
+std::string pieceLine(int heron, int smoothed, int repaired) {
+  return std::to_string(heron) + " mapped by geodesic barycentric (Heron) coordinates, " + std::to_string(smoothed) +
+         " by those with a band around their folds by mean value coordinates, " + std::to_string(repaired) +
+         " by mean value coordinates alone";
+}
+
 }  // namespace
 
 void declareSemiRegular(const MeshModel& /*mesh*/, RichParameterList& params) {
@@ -77,12 +84,7 @@ Status applySemiRegular(MeshDocument& doc, const RichParameterList& params, Filt
           baseLine(p.base.baseVertices, r->baseVertices, r->addedBaseVertices, r->baseTriangles) + ", " +
           std::to_string(p.levels) + " levels -> " + std::to_string(r->mesh.vertexCount()) + " vertices, " +
           std::to_string(r->mesh.faceCount()) + " faces on layer \"" + label.toStdString() + "\"");
-  ctx.log("Parameterisation: " + std::to_string(r->heronPieces) +
-          " pieces by geodesic barycentric (Heron) "
-          "coordinates, " +
-          std::to_string(r->repairedPieces) +
-          " repaired by mean value coordinates where those "
-          "folded; " +
+  ctx.log("Parameterisation, pieces: " + pieceLine(r->heronPieces, r->smoothedPieces, r->repairedPieces) + "; " +
           std::to_string(r->splitEdges) + " input edges split by the cut");
   if (r->reorientedFaces > 0)
     ctx.log(std::to_string(r->reorientedFaces) + " input faces reoriented to agree with their neighbours");
@@ -145,10 +147,7 @@ Status applyGeodesicBarycentric(MeshDocument& doc, const RichParameterList& para
           baseLine(p.base.baseVertices, static_cast<int>(r->base.baseVertex.size()), r->base.addedSamples, triangles) +
           "; the input cut into one disk per base triangle (" + std::to_string(r->pieces.splitEdges) +
           " edges split) on layer \"" + label.toStdString() + "\"");
-  ctx.log(std::to_string(r->heronPieces) + " pieces mapped by geodesic barycentric (Heron) coordinates, " +
-          std::to_string(r->repairedPieces) +
-          " repaired by mean value coordinates where those folded; no "
-          "flipped triangle");
+  ctx.log("Pieces: " + pieceLine(r->heronPieces, r->smoothedPieces, r->repairedPieces) + "; no flipped triangle");
   ctx.log("Vertex quality: the base triangle; wedge texture coordinates: one " + std::to_string(tiles) + " x " +
           std::to_string(tiles) + " grid tile per base triangle" +
           (texture.empty() ? std::string(" (the checkerboard could not be written)") : "; checkerboard " + texture));

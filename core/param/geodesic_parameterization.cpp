@@ -57,13 +57,21 @@ std::vector<Piece> collectPieces(const BasePieces& cut, const BaseDomain& base) 
 
 /// One front per base vertex on the cut surface, until it has reached every vertex of its pieces:
 /// fills the pieces' distances and returns the base edges' lengths (the smaller way; +inf if unmet).
-Expected<std::vector<double>> runFronts(const BasePieces& cut, const BaseDomain& base, std::vector<Piece>& pieces,
-                                        Progress progress) {
+struct Fronts {
+  std::vector<double> edgeLength;                          // per base edge, the smaller way; +inf if unmet
+  std::vector<std::array<std::vector<double>, 2>> onPath;  // per base edge, d from its lower and higher end
+};
+
+Expected<Fronts> runFronts(const BasePieces& cut, const BaseDomain& base, std::vector<Piece>& pieces,
+                           Progress progress) {
   const int nb = static_cast<int>(base.baseVertex.size());
   std::vector<std::vector<std::pair<int, int>>> star(nb);  // per base vertex: (triangle, its corner)
   for (size_t t = 0; t < base.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) star[base.triangles[t][k]].emplace_back(static_cast<int>(t), k);
-  std::vector<double> length(cut.edges.size(), kUnreached);
+  Fronts out;
+  std::vector<double>& length = out.edgeLength;
+  length.assign(cut.edges.size(), kUnreached);
+  out.onPath.resize(cut.edges.size());
   const Metric metric = Metric::uniform();
   FastMarcher marcher(cut.mesh, metric);
   for (int i = 0; i < nb; ++i) {
@@ -82,10 +90,42 @@ Expected<std::vector<double>> runFronts(const BasePieces& cut, const BaseDomain&
         const int j = base.triangles[t][(k + m) % 3];
         const int e = cut.triangleEdge[t][(k + 3 - m) % 3];
         length[e] = std::min(length[e], d[base.baseVertex[j]]);
+        std::vector<double>& along = out.onPath[e][cut.edges[e].first == i ? 0 : 1];
+        if (along.empty())
+          for (int v : cut.path[e]) along.push_back(d[v]);
       }
     }
   }
-  return length;
+  return out;
+}
+
+/// Per vertex of the cut surface on a path (not a base vertex), where it sits on its base edge:
+/// t in (0, 1) from the edge's lower base vertex, d_a / (d_a + d_b) from the two ends' fronts
+/// (what Heron's coordinates give a point of the side), or by arc length where that is not
+/// strictly increasing along the path. Both pieces of the edge read the same t: no crack.
+std::vector<double> sidePositions(const BasePieces& cut, const Fronts& fronts) {
+  std::vector<double> t(cut.mesh.vertexCount(), -1.0);
+  for (size_t e = 0; e < cut.path.size(); ++e) {
+    const std::vector<int>& path = cut.path[e];
+    const std::vector<double>&da = fronts.onPath[e][0], &db = fronts.onPath[e][1];
+    std::vector<double> at(path.size(), 0.0);
+    bool increasing = da.size() == path.size() && db.size() == path.size();
+    for (size_t k = 1; increasing && k + 1 < path.size(); ++k) {
+      at[k] = da[k] / (da[k] + db[k]);
+      increasing = std::isfinite(at[k]) && at[k] > at[k - 1] && at[k] < 1.0;
+    }
+    if (!increasing) {
+      double total = 0.0, run = 0.0;
+      for (size_t k = 0; k + 1 < path.size(); ++k)
+        total += (cut.mesh.positions[path[k]] - cut.mesh.positions[path[k + 1]]).norm();
+      for (size_t k = 1; k + 1 < path.size(); ++k) {
+        run += (cut.mesh.positions[path[k - 1]] - cut.mesh.positions[path[k]]).norm();
+        at[k] = run / total;
+      }
+    }
+    for (size_t k = 1; k + 1 < path.size(); ++k) t[path[k]] = at[k];
+  }
+  return t;
 }
 
 double pathLength(const TriMesh& mesh, const std::vector<int>& path) {
@@ -94,20 +134,19 @@ double pathLength(const TriMesh& mesh, const std::vector<int>& path) {
   return s;
 }
 
-/// Per vertex of a piece's loop, its point on the domain's sides, by arc length between corners.
-void pinSides(const TriMesh& mesh, const Piece& p, const std::vector<int>& cornerAt, const std::array<Vec2, 3>& q,
-              std::vector<Vec2>& uvOf, const std::vector<int>& local) {
-  const int n = static_cast<int>(p.loop.size());
-  for (int s = 0; s < 3; ++s) {
-    const int from = cornerAt[s], to = s == 2 ? n : cornerAt[s + 1];
-    double total = 0.0;
-    for (int k = from; k < to; ++k) total += (mesh.positions[p.loop[k]] - mesh.positions[p.loop[(k + 1) % n]]).norm();
-    double run = 0.0;
-    for (int k = from; k < to; ++k) {
-      const double t = total > 0.0 ? run / total : 0.0;
-      uvOf[local[p.loop[k]]] = q[s] + t * (q[(s + 1) % 3] - q[s]);
-      run += (mesh.positions[p.loop[k]] - mesh.positions[p.loop[(k + 1) % n]]).norm();
-    }
+/// Per vertex of a piece's loop, its point on the domain's sides (sidePositions).
+void pinSides(const Parameterization& par, const Piece& p, int t, const std::vector<double>& sideT,
+              const std::array<Vec2, 3>& q, std::vector<Vec2>& uvOf, const std::vector<int>& local) {
+  const Tri& bt = par.base.triangles[t];
+  for (int c = 0; c < 3; ++c) uvOf[local[par.base.baseVertex[bt[c]]]] = q[c];
+  int side = 0;  // the loop runs corner 0 -> 1 -> 2 -> 0
+  for (int v : p.loop) {
+    for (int c = 0; c < 3; ++c)
+      if (v == par.base.baseVertex[bt[c]]) side = c;
+    if (sideT[v] < 0.0) continue;
+    const int e = par.pieces.triangleEdge[t][(side + 2) % 3];  // the edge from corner side to side + 1
+    const double fromCorner = par.pieces.edges[e].first == bt[side] ? sideT[v] : 1.0 - sideT[v];
+    uvOf[local[v]] = q[side] + fromCorner * (q[(side + 1) % 3] - q[side]);
   }
 }
 
@@ -175,25 +214,57 @@ Status meanValueMap(const TriMesh& mesh, const Piece& p, const std::vector<char>
 }
 
 struct PieceOutcome {
-  bool heron = false;
-  bool repaired = false;
+  bool heron = false;     // Heron's coordinates everywhere
+  bool smoothed = false;  // Heron's, with a band around the folds mapped by mean value coordinates
+  bool repaired = false;  // mean value coordinates everywhere
 };
+
+/// Rings of vertices around the folded faces remapped by mean value coordinates, the rest of
+/// the piece keeping Heron's coordinates (Lee et al. 1998's relaxation, confined to the folds),
+/// before the whole piece is; each try is checked.
+constexpr int kSmoothingRings[] = {2, 6, 18};
+
+/// Per vertex of piece p: inside it and within `rings` edges of a folded face.
+std::vector<char> bandAroundFolds(const TriMesh& mesh, const Piece& p, const std::vector<Vec2>& uvOf,
+                                  const std::vector<int>& local, const std::vector<char>& inside, double tiny,
+                                  int rings) {
+  std::vector<char> band(p.vertices.size(), 0);
+  std::vector<int> front;
+  for (int f : p.faces) {
+    const Tri& t = mesh.triangles[f];
+    if (signedArea(uvOf[local[t[0]]], uvOf[local[t[1]]], uvOf[local[t[2]]]) > tiny) continue;
+    for (int v : t)
+      if (!band[local[v]]) {
+        band[local[v]] = 1;
+        front.push_back(v);
+      }
+  }
+  for (int r = 0; r < rings; ++r) {
+    std::vector<int> next;
+    for (int v : front)
+      for (const int* c = mesh.cornersBegin(v); c != mesh.cornersEnd(v); ++c)
+        for (int w : {mesh.vertex(TriMesh::next(*c)), mesh.vertex(TriMesh::prev(*c))})
+          if (local[w] >= 0 && local[w] < static_cast<int>(p.vertices.size()) && p.vertices[local[w]] == w &&
+              !band[local[w]]) {
+            band[local[w]] = 1;
+            next.push_back(w);
+          }
+    front = std::move(next);
+  }
+  for (size_t l = 0; l < band.size(); ++l) band[l] = band[l] && inside[l];
+  return band;
+}
 
 /// Maps piece t onto its domain; writes the corners' (u, v).
 Expected<PieceOutcome> mapPiece(const Parameterization& par, const Piece& p, int t, const std::array<Vec2, 3>& q,
-                                std::vector<int>& local, std::vector<Vec2>& cornerUv) {
+                                const std::vector<double>& sideT, std::vector<int>& local,
+                                std::vector<Vec2>& cornerUv) {
   const TriMesh& mesh = par.pieces.mesh;
-  const Tri& bt = par.base.triangles[t];
   for (size_t l = 0; l < p.vertices.size(); ++l) local[p.vertices[l]] = static_cast<int>(l);
-  std::vector<int> cornerAt(3, -1);
   std::vector<char> inside(p.vertices.size(), 1);
-  for (size_t k = 0; k < p.loop.size(); ++k) {
-    inside[local[p.loop[k]]] = 0;
-    for (int c = 0; c < 3; ++c)
-      if (p.loop[k] == par.base.baseVertex[bt[c]]) cornerAt[c] = static_cast<int>(k);
-  }
+  for (int v : p.loop) inside[local[v]] = 0;
   std::vector<Vec2> uvOf(p.vertices.size(), Vec2::Zero());
-  pinSides(mesh, p, cornerAt, q, uvOf, local);
+  pinSides(par, p, t, sideT, q, uvOf, local);
   const std::array<int, 3>& te = par.pieces.triangleEdge[t];  // edges facing corners 0, 1, 2
   const double l12 = par.edgeLength[te[0]], l20 = par.edgeLength[te[1]], l01 = par.edgeLength[te[2]];
   PieceOutcome out;
@@ -206,14 +277,25 @@ Expected<PieceOutcome> mapPiece(const Parameterization& par, const Piece& p, int
     uvOf[l] = h.weights[0] * q[0] + h.weights[1] * q[1] + h.weights[2] * q[2];
   }
   const double area = signedArea(q[0], q[1], q[2]);
-  if (!out.heron || folded(mesh, p, uvOf, local, area)) {
+  if (out.heron && folded(mesh, p, uvOf, local, area)) {
     out.heron = false;
+    for (int rings : kSmoothingRings) {
+      const std::vector<char> band = bandAroundFolds(mesh, p, uvOf, local, inside, 1e-14 * area, rings);
+      std::vector<Vec2> tried = uvOf;
+      if (meanValueMap(mesh, p, band, tried, local, false) && !folded(mesh, p, tried, local, area)) {
+        uvOf = std::move(tried);
+        out.smoothed = true;
+        break;
+      }
+    }
+  }
+  if (!out.heron && !out.smoothed) {
     out.repaired = true;
     if (Status s = meanValueMap(mesh, p, inside, uvOf, local, false); !s || folded(mesh, p, uvOf, local, area))
       if (Status u = meanValueMap(mesh, p, inside, uvOf, local, true); !u) return u;
     if (folded(mesh, p, uvOf, local, area))
-      return internalError("geodesic parameterisation: the piece of base triangle " + std::to_string(t) +
-                           " is folded after its mean value map");
+      return degenerate("geodesic parameterisation: the piece of base triangle " + std::to_string(t) +
+                        " is folded after its mean value map");
   }
   Eigen::Matrix2d frame;
   frame << q[1] - q[0], q[2] - q[0];
@@ -262,9 +344,10 @@ Expected<Parameterization> parameterizeOverBase(const TriMesh& input, const Para
   if (!cut) return cut.status();
   par.pieces = std::move(*cut);
   std::vector<Piece> pieces = collectPieces(par.pieces, par.base);
-  Expected<std::vector<double>> lengths = runFronts(par.pieces, par.base, pieces, progress.sub(0.6, 0.9));
-  if (!lengths) return lengths.status();
-  par.edgeLength = std::move(*lengths);
+  Expected<Fronts> fronts = runFronts(par.pieces, par.base, pieces, progress.sub(0.6, 0.9));
+  if (!fronts) return fronts.status();
+  par.edgeLength = fronts->edgeLength;
+  const std::vector<double> sideT = sidePositions(par.pieces, *fronts);
   for (size_t e = 0; e < par.edgeLength.size(); ++e)
     if (!std::isfinite(par.edgeLength[e])) par.edgeLength[e] = pathLength(par.pieces.mesh, par.pieces.path[e]);
   par.cornerUv.assign(3 * par.pieces.mesh.faceCount(), Vec2::Zero());
@@ -274,9 +357,10 @@ Expected<Parameterization> parameterizeOverBase(const TriMesh& input, const Para
       return cancelled();
     const std::array<int, 3>& te = par.pieces.triangleEdge[t];
     const std::array<Vec2, 3> q = triangleDomain(par.edgeLength[te[2]], par.edgeLength[te[0]], par.edgeLength[te[1]]);
-    Expected<PieceOutcome> mapped = mapPiece(par, pieces[t], static_cast<int>(t), q, local, par.cornerUv);
+    Expected<PieceOutcome> mapped = mapPiece(par, pieces[t], static_cast<int>(t), q, sideT, local, par.cornerUv);
     if (!mapped) return mapped.status();
     par.heronPieces += mapped->heron;
+    par.smoothedPieces += mapped->smoothed;
     par.repairedPieces += mapped->repaired;
   }
   return par;

@@ -45,13 +45,14 @@ struct Parameterization {
   std::vector<Vec2> cornerUv;
   std::vector<double> edgeLength;  ///< per base edge (pieces.edges), its geodesic length on the input
   int heronPieces = 0;             ///< pieces mapped by Heron's coordinates
+  int smoothedPieces = 0;          ///< by Heron's, but for a band around the faces those folded (mean value)
   int repairedPieces = 0;          ///< pieces where those flipped a face, mapped by mean value coordinates
 };
 
 /// Fails with InvalidInput (no faces, a triangle soup: TriMesh::looksLikeTriangleSoup, a component
 /// of zero area), NonManifold, as
-/// buildBaseDomain and cutIntoBasePieces do, or with Internal if a piece is still folded after the
-/// mean value map (a numerical failure; it never happened on the data set).
+/// buildBaseDomain and cutIntoBasePieces do, or with Degenerate if a piece is still folded after
+/// the mean value and Tutte maps (degenerate faces: degtri_sliding.off of the data set).
 Expected<Parameterization> parameterizeOverBase(const TriMesh& input, const ParameterizationParams& params = {},
                                                 Progress progress = {});
 

@@ -179,6 +179,7 @@ Expected<SemiRegularResult> semiRegularRemesh(const TriMesh& input, const SemiRe
   r.addedBaseVertices = par->base.addedSamples;
   r.splitEdges = par->pieces.splitEdges;
   r.heronPieces = par->heronPieces;
+  r.smoothedPieces = par->smoothedPieces;
   r.repairedPieces = par->repairedPieces;
   return r;
 }

@@ -33,8 +33,10 @@ struct SemiRegularParams {
   int levels = 3;         ///< 1-to-4 subdivisions of each base triangle, 0..kMaxLevels
   /// Rounds of tangential relaxation on the input after the mapping (0 = the parameterisation's
   /// points as they are): the points near the base edges, where the pieces' maps meet with
-  /// different stretch, move toward their neighbours' mean.
-  int relaxationRounds = 3;
+  /// different stretch, move toward their neighbours' mean. 500 base vertices, 3 levels, smallest
+  /// angle with 3 / 6 / 10 rounds: bunny00 13.2 / 21.7 / 23.8 degrees, armadillo 13.2 / 18.7 /
+  /// 22.3 (about 15 ms a round on bunny00).
+  int relaxationRounds = 6;
   /// Measure the two-sided Hausdorff distance to the input (surfaceDistance both ways, measure/).
   bool measureDistance = true;
   static constexpr int kMaxLevels = 6;
@@ -51,6 +53,7 @@ struct SemiRegularResult {
   int addedBaseVertices = 0;  ///< by the base domain's repair
   int splitEdges = 0;         ///< input edges split by the cut
   int heronPieces = 0;        ///< pieces mapped by Heron's coordinates
+  int smoothedPieces = 0;     ///< by Heron's, with a band around their folds by mean value coordinates
   int repairedPieces = 0;     ///< pieces mapped by mean value coordinates (Heron's folded)
   int relaxationMoves = 0;
   int reorientedFaces = 0;  ///< input faces turned to agree with their neighbours

@@ -112,6 +112,8 @@ Status applyGeodesicBarycentric(MeshDocument& doc, const RichParameterList& para
   const std::vector<Vec2> uv = tiledUv(*r);
   const TriMesh& cut = r->pieces.mesh;
   std::vector<SurfacePoint> origin(cut.vertexCount());
+  for (int v = 0; v < current->view.mesh.vertexCount(); ++v)  // the input's, isolated ones included
+    origin[v] = SurfacePoint::atVertex(v);
   for (int f = 0; f < cut.faceCount(); ++f)
     for (int k = 0; k < 3; ++k) {
       Vec3 b = r->pieces.cornerBary[3 * f + k];

@@ -12,7 +12,11 @@
 #   quality and colour), resources/texture_atlas.mlx -> <mesh>_atlas.obj (+ .mtl and the
 #   checkerboard <mesh>_geodesic_atlas.png: wedge texture coordinates of the geodesic atlas), and
 #   the same atlas as <mesh>_atlas.ply for MeshLab; if Blender is installed, it opens the OBJ
-#   (scripts/blender_open_obj.py: faces, UV layers, texture)
+#   (scripts/blender_open_obj.py: faces, UV layers, texture); resources/semi_regular_500_l3.mlx
+#   -> <mesh>_semi_regular.ply and bunny00_semi_regular.off (semi-regular remeshes: 500 base
+#   vertices, 3 levels), resources/geodesic_barycentric_100.mlx -> <mesh>_barycentric.ply (the
+#   input cut into disks, one texture tile per base triangle, checkerboard
+#   <mesh>_geodesic_barycentric.png)
 # and prints MeshLab's log of each run. The plugin is loaded from a staged prefix (build/stage),
 # not from /usr.
 set -euo pipefail
@@ -30,19 +34,21 @@ name=$(basename "${mesh%.*}")
 run() {  # run <script.mlx> <output.ply> <what the output holds> [input mesh, default $mesh] [saved attributes]
   local script=$1 out=$2 what=$3
   local mesh=${4:-$mesh}
-  local mask=${5:-vq vc sa}
+  local mask=${5:-vq vc sa}  # "none": no -m (positions and faces only)
+  local maskArgs=(-m $mask)
+  [ "$mask" = none ] && maskArgs=()
   rm -f "$out"
   echo "== meshlabserver: $(basename "$mesh") -> $out, script $(basename "$script")"
   set +e
   local log
-  log=$(cd "$root/output" && xvfb-run -a stdbuf -oL "$stage/bin/meshlabserver" -i "$mesh" -o "$out" -m $mask -s "$script" 2>&1)
+  log=$(cd "$root/output" && xvfb-run -a stdbuf -oL "$stage/bin/meshlabserver" -i "$mesh" -o "$out" "${maskArgs[@]}" -s "$script" 2>&1)
   local rc=$?
   set -e
   # MeshLab's own log lines of the run (noise filtered out). meshlabserver prints our progress
   # labels with no line break, so a run of them can prefix the next log line: a label directly
   # followed by a letter (the next label or log line, with no space) is cut.
   echo "$log" | grep -vE "^LOG: |XDG_RUNTIME_DIR|no additional memory|^Loading Plugins|^Total [0-9]+ (filtering|io)|Current Plugins Dir|^$" |
-    sed -E ':a; s/^(Farthest point sampling|Fast marching|intrinsic Delaunay refinement|Geodesic Delaunay repair|Relaxation|Curvature|Surface distance|Geodesic Lloyd|Texture atlas: flattening the charts|Texture atlas: packing)([A-Za-z])/\2/; ta' | sed 's/^/  /'
+    sed -E ':a; s/^(Farthest point sampling|Fast marching|intrinsic Delaunay refinement|Geodesic Delaunay repair|Relaxation|Curvature|Surface distance|Geodesic Lloyd|Texture atlas: flattening the charts|Texture atlas: packing|Cutting the surface along the base edges|Geodesic distances to the base vertices|Mapping the pieces onto their base triangles|Relaxing the semi-regular mesh on the input|Measuring the distance to the input)([A-Za-z])/\2/; ta' | sed 's/^/  /'
   echo "== exit code $rc"
   [ $rc -eq 0 ] && [ -s "$out" ] || { echo "main: meshlabserver failed" >&2; exit 1; }
   local nv nf
@@ -78,6 +84,15 @@ run "$root/resources/texture_atlas.mlx" "$root/output/${name}_atlas.obj" \
 # aborts on OBJ files, its own included).
 run "$root/resources/texture_atlas.mlx" "$root/output/${name}_atlas.ply" \
     "geodesic texture atlas as PLY with per-face texture coordinates, for MeshLab" "$atlas_input" "wt"
+run "$root/resources/semi_regular_500_l3.mlx" "$root/output/${name}_semi_regular.ply" \
+    "semi-regular remesh (500 base vertices, 3 levels): every vertex off the base vertices has valence 6" \
+    "$mesh" "vc vq"
+run "$root/resources/semi_regular_500_l3.mlx" "$root/output/bunny00_semi_regular.off" \
+    "semi-regular remesh of bunny00 (the README's picture: scripts/color_semi_regular.py)" \
+    "$cache/meshes/bunny00.off" none
+run "$root/resources/geodesic_barycentric_100.mlx" "$root/output/${name}_barycentric.ply" \
+    "geodesic barycentric parameterisation: base triangle in vertex quality and colour, one tile per base triangle (output/${name}_geodesic_barycentric.png)" \
+    "$atlas_input" "wt vq vc"
 # Blender (if installed; not needed otherwise) opens the atlas's OBJ + MTL + PNG.
 if command -v blender > /dev/null 2>&1; then
   opened=$(blender -b --python "$root/scripts/blender_open_obj.py" -- "$root/output/${name}_atlas.obj" 2>&1 |

@@ -99,31 +99,34 @@ Expected<Fronts> runFronts(const BasePieces& cut, const BaseDomain& base, std::v
   return out;
 }
 
+/// A side's points keep their distance ratios only if each step along the path moves at least this
+/// fraction of its arc length: a path that runs across the fronts' direction keeps the ratio nearly
+/// constant, and its points would crowd (cylinder.off, 500 base vertices: faces squashed to 1e-11).
+constexpr double kMinSideStep = 0.25;
+
 /// Per vertex of the cut surface on a path (not a base vertex), where it sits on its base edge:
 /// t in (0, 1) from the edge's lower base vertex, d_a / (d_a + d_b) from the two ends' fronts
-/// (what Heron's coordinates give a point of the side), or by arc length where that is not
-/// strictly increasing along the path. Both pieces of the edge read the same t: no crack.
+/// (what Heron's coordinates give a point of the side), or by arc length where those do not
+/// increase by kMinSideStep of the arc length at every step. Both pieces of the edge read the same
+/// t: no crack.
 std::vector<double> sidePositions(const BasePieces& cut, const Fronts& fronts) {
   std::vector<double> t(cut.mesh.vertexCount(), -1.0);
   for (size_t e = 0; e < cut.path.size(); ++e) {
     const std::vector<int>& path = cut.path[e];
+    const size_t n = path.size();
+    std::vector<double> arc(n, 0.0), at(n, 1.0);
+    for (size_t k = 1; k < n; ++k)
+      arc[k] = arc[k - 1] + (cut.mesh.positions[path[k - 1]] - cut.mesh.positions[path[k]]).norm();
+    for (size_t k = 0; k < n; ++k) arc[k] /= arc[n - 1];
     const std::vector<double>&da = fronts.onPath[e][0], &db = fronts.onPath[e][1];
-    std::vector<double> at(path.size(), 0.0);
-    bool increasing = da.size() == path.size() && db.size() == path.size();
-    for (size_t k = 1; increasing && k + 1 < path.size(); ++k) {
+    bool even = da.size() == n && db.size() == n;
+    at[0] = 0.0;
+    for (size_t k = 1; even && k + 1 < n; ++k) {
       at[k] = da[k] / (da[k] + db[k]);
-      increasing = std::isfinite(at[k]) && at[k] > at[k - 1] && at[k] < 1.0;
+      even = std::isfinite(at[k]) && at[k] - at[k - 1] >= kMinSideStep * (arc[k] - arc[k - 1]);
     }
-    if (!increasing) {
-      double total = 0.0, run = 0.0;
-      for (size_t k = 0; k + 1 < path.size(); ++k)
-        total += (cut.mesh.positions[path[k]] - cut.mesh.positions[path[k + 1]]).norm();
-      for (size_t k = 1; k + 1 < path.size(); ++k) {
-        run += (cut.mesh.positions[path[k - 1]] - cut.mesh.positions[path[k]]).norm();
-        at[k] = run / total;
-      }
-    }
-    for (size_t k = 1; k + 1 < path.size(); ++k) t[path[k]] = at[k];
+    even = even && at[n - 1] - at[n - 2] >= kMinSideStep * (arc[n - 1] - arc[n - 2]);
+    for (size_t k = 1; k + 1 < n; ++k) t[path[k]] = even ? at[k] : arc[k];
   }
   return t;
 }
@@ -154,14 +157,85 @@ double signedArea(const Vec2& a, const Vec2& b, const Vec2& c) {
   return 0.5 * ((b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x()));
 }
 
-bool folded(const TriMesh& mesh, const Piece& p, const std::vector<Vec2>& uvOf, const std::vector<int>& local,
-            double domainArea) {
-  const double tiny = 1e-14 * domainArea;
+/// Heron's coordinates (smoothed or not) are kept only if no face shrinks to less than this share
+/// of its part of the domain (its share of the piece's area in 3D): a face squashed further would
+/// be flat once MeshLab holds its texture coordinates in floats (anchor.off, 500 base vertices:
+/// two faces at 1e-11 of the domain, 0 in float). The mean value map is judged by orientation alone.
+constexpr double kHeronMinAreaShare = 1e-4;
+
+/// The faces of piece p that are not counter-clockwise in the domain (of area `domainArea`) or,
+/// with `minShare` > 0, smaller than minShare times their share of the piece's 3D area.
+/// Where a piece's domain lands in tiledUv's texture, to judge its faces as MeshLab will hold
+/// them: texture coordinates rounded to float.
+struct Tile {
+  Vec2 q0;
+  Eigen::Matrix2d toUv;  // domain point - q0 -> the (u, v) of the base triangle's corners 1 and 2
+  Vec2 origin;
+  double size = 1.0;
+};
+
+/// x rounded to the nearest float (through a volatile: GCC folds double(float(x)) away otherwise,
+/// as core/atlas/texture_atlas.cpp found).
+double roundedToFloat(double x) {
+  volatile float rounded = static_cast<float>(x);
+  return static_cast<double>(rounded);
+}
+
+/// a, b, c counter-clockwise beyond the rounding of the orientation's own arithmetic.
+bool surelyCounterClockwise(const Vec2& a, const Vec2& b, const Vec2& c) {
+  const double left = (a.x() - c.x()) * (b.y() - c.y()), right = (a.y() - c.y()) * (b.x() - c.x());
+  return left - right > 3.3306690738754716e-16 * (std::abs(left) + std::abs(right));
+}
+
+/// tiledUv's grid: g x g tiles for `triangles` base triangles.
+int tileGrid(int triangles) {
+  return std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(triangles)))));
+}
+
+Vec2 tileOrigin(int t, int g, double margin) { return Vec2((t % g + margin) / g, (t / g + margin) / g); }
+
+Tile tileOf(int t, int triangles, const std::array<Vec2, 3>& q) {
+  Tile tile;
+  tile.q0 = q[0];
+  Eigen::Matrix2d frame;
+  frame << q[1] - q[0], q[2] - q[0];
+  tile.toUv = frame.inverse();
+  const int g = tileGrid(triangles);
+  tile.origin = tileOrigin(t, g, kTileMargin);
+  tile.size = (1.0 - 2.0 * kTileMargin) / g;
+  return tile;
+}
+
+Vec2 textureOf(const Tile& tile, const Vec2& domainPoint) {
+  const Vec2 uv = tile.origin + tile.size * (tile.toUv * (domainPoint - tile.q0));
+  return Vec2(roundedToFloat(uv.x()), roundedToFloat(uv.y()));
+}
+
+std::vector<int> badFaces(const TriMesh& mesh, const Piece& p, const std::vector<Vec2>& uvOf,
+                          const std::vector<int>& local, double domainArea, double minShare, const Tile& tile) {
+  auto area3 = [&](int f) {
+    const Tri& t = mesh.triangles[f];
+    return (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm();
+  };
+  double total = 0.0;
+  if (minShare > 0.0)
+    for (int f : p.faces) total += area3(f);
+  std::vector<int> bad;
   for (int f : p.faces) {
     const Tri& t = mesh.triangles[f];
-    if (!(signedArea(uvOf[local[t[0]]], uvOf[local[t[1]]], uvOf[local[t[2]]]) > tiny)) return true;
+    double least = 1e-14 * domainArea;
+    if (minShare > 0.0 && total > 0.0) least = std::max(least, minShare * domainArea * area3(f) / total);
+    const Vec2 &a = uvOf[local[t[0]]], &b = uvOf[local[t[1]]], &c = uvOf[local[t[2]]];
+    if (!(signedArea(a, b, c) > least) ||
+        !surelyCounterClockwise(textureOf(tile, a), textureOf(tile, b), textureOf(tile, c)))
+      bad.push_back(f);
   }
-  return false;
+  return bad;
+}
+
+bool folded(const TriMesh& mesh, const Piece& p, const std::vector<Vec2>& uvOf, const std::vector<int>& local,
+            double domainArea, const Tile& tile, double minShare = 0.0) {
+  return !badFaces(mesh, p, uvOf, local, domainArea, minShare, tile).empty();
 }
 
 /// The interior vertices placed by mean value coordinates (Floater 2003) with the loop fixed, or
@@ -224,15 +298,13 @@ struct PieceOutcome {
 /// before the whole piece is; each try is checked.
 constexpr int kSmoothingRings[] = {2, 6, 18};
 
-/// Per vertex of piece p: inside it and within `rings` edges of a folded face.
-std::vector<char> bandAroundFolds(const TriMesh& mesh, const Piece& p, const std::vector<Vec2>& uvOf,
-                                  const std::vector<int>& local, const std::vector<char>& inside, double tiny,
-                                  int rings) {
+/// Per vertex of piece p: inside it and within `rings` edges of a face of `folds`.
+std::vector<char> bandAroundFolds(const TriMesh& mesh, const Piece& p, const std::vector<int>& folds,
+                                  const std::vector<int>& local, const std::vector<char>& inside, int rings) {
   std::vector<char> band(p.vertices.size(), 0);
   std::vector<int> front;
-  for (int f : p.faces) {
+  for (int f : folds) {
     const Tri& t = mesh.triangles[f];
-    if (signedArea(uvOf[local[t[0]]], uvOf[local[t[1]]], uvOf[local[t[2]]]) > tiny) continue;
     for (int v : t)
       if (!band[local[v]]) {
         band[local[v]] = 1;
@@ -267,6 +339,7 @@ Expected<PieceOutcome> mapPiece(const Parameterization& par, const Piece& p, int
   pinSides(par, p, t, sideT, q, uvOf, local);
   const std::array<int, 3>& te = par.pieces.triangleEdge[t];  // edges facing corners 0, 1, 2
   const double l12 = par.edgeLength[te[0]], l20 = par.edgeLength[te[1]], l01 = par.edgeLength[te[2]];
+  const Tile tile = tileOf(t, static_cast<int>(par.base.triangles.size()), q);
   PieceOutcome out;
   out.heron = true;
   for (size_t l = 0; l < p.vertices.size(); ++l) {
@@ -277,12 +350,15 @@ Expected<PieceOutcome> mapPiece(const Parameterization& par, const Piece& p, int
     uvOf[l] = h.weights[0] * q[0] + h.weights[1] * q[1] + h.weights[2] * q[2];
   }
   const double area = signedArea(q[0], q[1], q[2]);
-  if (out.heron && folded(mesh, p, uvOf, local, area)) {
+  const std::vector<int> folds =
+      out.heron ? badFaces(mesh, p, uvOf, local, area, kHeronMinAreaShare, tile) : std::vector<int>();
+  if (!folds.empty()) {
     out.heron = false;
     for (int rings : kSmoothingRings) {
-      const std::vector<char> band = bandAroundFolds(mesh, p, uvOf, local, inside, 1e-14 * area, rings);
+      const std::vector<char> band = bandAroundFolds(mesh, p, folds, local, inside, rings);
       std::vector<Vec2> tried = uvOf;
-      if (meanValueMap(mesh, p, band, tried, local, false) && !folded(mesh, p, tried, local, area)) {
+      if (meanValueMap(mesh, p, band, tried, local, false) &&
+          !folded(mesh, p, tried, local, area, tile, kHeronMinAreaShare)) {
         uvOf = std::move(tried);
         out.smoothed = true;
         break;
@@ -291,17 +367,14 @@ Expected<PieceOutcome> mapPiece(const Parameterization& par, const Piece& p, int
   }
   if (!out.heron && !out.smoothed) {
     out.repaired = true;
-    if (Status s = meanValueMap(mesh, p, inside, uvOf, local, false); !s || folded(mesh, p, uvOf, local, area))
+    if (Status s = meanValueMap(mesh, p, inside, uvOf, local, false); !s || folded(mesh, p, uvOf, local, area, tile))
       if (Status u = meanValueMap(mesh, p, inside, uvOf, local, true); !u) return u;
-    if (folded(mesh, p, uvOf, local, area))
+    if (folded(mesh, p, uvOf, local, area, tile))
       return degenerate("geodesic parameterisation: the piece of base triangle " + std::to_string(t) +
                         " is folded after its mean value map");
   }
-  Eigen::Matrix2d frame;
-  frame << q[1] - q[0], q[2] - q[0];
-  const Eigen::Matrix2d inverse = frame.inverse();
   for (int f : p.faces)
-    for (int k = 0; k < 3; ++k) cornerUv[3 * f + k] = inverse * (uvOf[local[mesh.triangles[f][k]]] - q[0]);
+    for (int k = 0; k < 3; ++k) cornerUv[3 * f + k] = tile.toUv * (uvOf[local[mesh.triangles[f][k]]] - tile.q0);
   return out;
 }
 
@@ -366,16 +439,12 @@ Expected<Parameterization> parameterizeOverBase(const TriMesh& input, const Para
   return par;
 }
 
-std::vector<Vec2> tiledUv(const Parameterization& par, double margin) {
-  const int nt = static_cast<int>(par.base.triangles.size());
-  const int g = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(nt)))));
-  const double size = (1.0 - 2.0 * margin) / g;
+std::vector<Vec2> tiledUv(const Parameterization& par) {
+  const int g = tileGrid(static_cast<int>(par.base.triangles.size()));
+  const double size = (1.0 - 2.0 * kTileMargin) / g;
   std::vector<Vec2> uv(par.cornerUv.size());
-  for (size_t c = 0; c < uv.size(); ++c) {
-    const int t = par.pieces.triangle[c / 3];
-    const Vec2 origin((t % g + margin) / g, (t / g + margin) / g);
-    uv[c] = origin + size * par.cornerUv[c];
-  }
+  for (size_t c = 0; c < uv.size(); ++c)
+    uv[c] = tileOrigin(par.pieces.triangle[c / 3], g, kTileMargin) + size * par.cornerUv[c];
   return uv;
 }
 

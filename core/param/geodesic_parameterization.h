@@ -61,10 +61,15 @@ Expected<Parameterization> parameterizeOverBase(const TriMesh& input, const Para
 /// or a flat triangle (shape quality under 0.05) give the equilateral triangle of their mean side.
 std::array<Vec2, 3> triangleDomain(double l01, double l12, double l20);
 
+/// The margin of tiledUv's tiles, a fraction of the tile.
+constexpr double kTileMargin = 0.05;
+
 /// The parameterisation as one texture: base triangle t in square tile (t mod g, t div g) of a
 /// g x g grid (g = ceil(sqrt(triangles))), its corners 0, 1, 2 at the tile's lower left, lower
-/// right and upper left, `margin` (a fraction of the tile) inside. Per corner of pieces.mesh, in
-/// [0, 1]^2: a checkerboard shows each piece's map, one tile per base triangle.
-std::vector<Vec2> tiledUv(const Parameterization& par, double margin = 0.05);
+/// right and upper left, kTileMargin inside. Per corner of pieces.mesh, in [0, 1]^2: a
+/// checkerboard shows each piece's map, one tile per base triangle. Every face is counter-clockwise
+/// there also once the coordinates are rounded to float, as MeshLab holds them (the maps are
+/// judged so).
+std::vector<Vec2> tiledUv(const Parameterization& par);
 
 }  // namespace gr

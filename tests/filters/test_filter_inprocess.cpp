@@ -29,6 +29,7 @@
 #include "core/geodesic/geodesic_surface.h"
 #include "core/measure/evaluation.h"
 #include "core/mesh/vcg_mesh.h"
+#include "core/param/semi_regular.h"
 #include "core/remesh/remesh_surface.h"
 #include "core/segment/geodesic_segmentation.h"
 #include "filter_geodesic_remesh/fast_marching_filter.h"
@@ -1132,9 +1133,12 @@ TEST_F(FilterInProcess, EveryFilterIgnoresDeletedElements) {
 
   for (const char* filter :
        {"Geodesic Distance: Fast Marching from Selected Vertices", "Remeshing: Geodesic Uniform",
-        "Remeshing: Geodesic Adaptive", "Compute Total Curvature (Normal Cycle) into Vertex Quality"}) {
+        "Remeshing: Geodesic Adaptive", "Compute Total Curvature (Normal Cycle) into Vertex Quality",
+        "Remeshing: Geodesic Semi-Regular", "Parametrization: Geodesic Barycentric"}) {
     SCOPED_TRACE(filter);
     use(filter);
+    const bool overBase = std::string(filter) == "Remeshing: Geodesic Semi-Regular" ||
+                          std::string(filter) == "Parametrization: Geodesic Barycentric";
     MeshModel* out[2] = {nullptr, nullptr};
     MeshModel* in[2] = {holed, compact};
     for (int i = 0; i < 2; ++i) {
@@ -1142,6 +1146,9 @@ TEST_F(FilterInProcess, EveryFilterIgnoresDeletedElements) {
       declare(*in[i]);
       if (std::string(filter) == "Remeshing: Geodesic Uniform")
         params.setValue(filters::param::kTargetVertices, IntValue(300));
+      if (overBase) params.setValue(filters::param::kBaseVertices, IntValue(60));
+      if (std::string(filter) == "Remeshing: Geodesic Semi-Regular")
+        params.setValue(filters::param::kLevels, IntValue(1));
       ASSERT_TRUE(apply()) << logText();
       out[i] = doc.mm();
     }
@@ -1228,6 +1235,41 @@ void expectValidAtlas(const MeshModel& mm) {
   EXPECT_EQ(c.zeroArea, 0);
   EXPECT_EQ(c.overlaps, 0);
   EXPECT_EQ(c.outsideUnitSquare, 0);
+}
+
+/// The layer of "Parametrization: Geodesic Barycentric" with `triangles` base triangles: its
+/// wedge texture coordinates (floats, as MeshLab holds them) give every face a positive area, and
+/// the faces whose centroid lies in tile (i, j) of the ceil(sqrt(triangles)) grid add up to the
+/// area of the tile's triangle (corners at the tile's margin 0.05, a right triangle): with
+/// positive faces whose images end on the triangle's sides, area adding up means they tile it,
+/// no gap and no overlap (the degree of the map is 1). Cheaper than the atlas oracle's
+/// pairwise test on layers of 100k faces.
+void expectTiles(const MeshModel& mm, int triangles) {
+  ASSERT_TRUE(mm.hasDataMask(MeshModel::MM_WEDGTEXCOORD));
+  const int g = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(triangles))));
+  const double side = (1.0 - 2.0 * 0.05) / g;
+  std::vector<double> area(static_cast<size_t>(g) * g, 0.0);
+  int flipped = 0, outside = 0;
+  for (const auto& f : mm.cm.face) {
+    if (f.IsD()) continue;
+    Eigen::Vector2d q[3];
+    for (int k = 0; k < 3; ++k) q[k] = Eigen::Vector2d(f.cWT(k).U(), f.cWT(k).V());
+    const double a = 0.5 * ((q[1] - q[0]).x() * (q[2] - q[0]).y() - (q[1] - q[0]).y() * (q[2] - q[0]).x());
+    flipped += !(a > 0.0);
+    const Eigen::Vector2d c = (q[0] + q[1] + q[2]) / 3.0;
+    const int i = static_cast<int>(c.x() * g), j = static_cast<int>(c.y() * g);
+    if (i < 0 || j < 0 || i >= g || j >= g) {
+      ++outside;
+      continue;
+    }
+    area[static_cast<size_t>(j) * g + i] += a;
+  }
+  EXPECT_EQ(flipped, 0);
+  EXPECT_EQ(outside, 0);
+  int wrong = 0;
+  for (int t = 0; t < triangles; ++t) wrong += std::abs(area[t] - 0.5 * side * side) > 1e-4 * side * side;
+  for (size_t t = triangles; t < area.size(); ++t) wrong += area[t] != 0.0;
+  EXPECT_EQ(wrong, 0) << "tiles whose faces do not add up to their triangle";
 }
 
 TEST_F(FilterInProcess, TextureAtlasWritesTheCoresWedgeUvsAndATexture) {
@@ -1465,6 +1507,80 @@ TEST_F(FilterInProcess, SegmentationBadInputLeavesTheDocumentAlone) {
   expectCleanFailure(*mm, StatusCode::InvalidInput, "vertex");
 }
 
+// --- Semi-regular remeshing and geodesic barycentric parameterisation (issue 21) ----------------
+
+TEST_F(FilterInProcess, SemiRegularMakesANewLayerAsTheCoreDoes) {
+  const TriMesh fandisk = test::loadRealMesh("fandisk.off");
+  MeshModel* mm = addMesh(doc, fandisk.positions, fandisk.triangles);
+  use("Remeshing: Geodesic Semi-Regular");
+  declare(*mm);
+  const SemiRegularParams d;
+  EXPECT_EQ(params.getInt(filters::param::kBaseVertices), d.base.baseVertices);
+  EXPECT_EQ(params.getInt(filters::param::kCentroidalIterations), d.base.centroidalIterations);
+  EXPECT_EQ(params.getInt(filters::param::kSeed), int(d.base.seed));
+  EXPECT_EQ(params.getInt(filters::param::kLevels), d.levels);
+  params.setValue(filters::param::kBaseVertices, IntValue(80));
+  params.setValue(filters::param::kLevels, IntValue(2));
+  const Snapshot before(*mm);
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_TRUE(Snapshot(*mm) == before) << "the input layer changed";
+  ASSERT_EQ(doc.meshList.size(), 2);
+  const MeshModel* out = doc.mm();
+  SemiRegularParams p;
+  p.base.baseVertices = 80;
+  p.levels = 2;
+  const Expected<SemiRegularResult> core = semiRegularRemesh(fandisk, p);
+  ASSERT_TRUE(core);
+  EXPECT_EQ(out->cm.vn, core->mesh.vertexCount());
+  EXPECT_EQ(faceIndices(*out), core->mesh.triangles);
+  test::expectValidWithTopologyOf(test::recount(faceIndices(*out), out->cm.vn),
+                                  test::recount(fandisk.triangles, fandisk.vertexCount()));
+  EXPECT_EQ(test::numberBefore(logText(), "base vertices ("), core->baseVertices) << logText();
+  EXPECT_NE(logText().find("Hausdorff distance"), std::string::npos) << logText();
+}
+
+TEST_F(FilterInProcess, GeodesicBarycentricWritesTiledUvsOnANewLayer) {
+  const TriMesh bunny = test::loadRealMesh("bunny00.off");
+  MeshModel* mm = addMesh(doc, bunny.positions, bunny.triangles);
+  use("Parametrization: Geodesic Barycentric");
+  declare(*mm);
+  params.setValue(filters::param::kBaseVertices, IntValue(100));
+  const Snapshot before(*mm);
+  ASSERT_TRUE(apply()) << logText();
+  EXPECT_TRUE(Snapshot(*mm) == before) << "the input layer changed";
+  ASSERT_EQ(doc.meshList.size(), 2);
+  const MeshModel* out = doc.mm();
+  expectValidAtlas(*out);
+  expectTiles(*out, test::numberBefore(logText(), "base triangles"));
+  EXPECT_EQ(out->cm.textures.size(), 1u);
+  // The new layer is the input surface, its first vertices the input's; the quality is a base triangle.
+  for (int v = 0; v < mm->cm.vn; v += 97) EXPECT_EQ(out->cm.vert[v].cP(), mm->cm.vert[v].cP());
+  const int triangles = test::numberBefore(logText(), "base triangles");
+  ASSERT_GT(triangles, 100);
+  int outOfRange = 0;
+  for (const auto& v : out->cm.vert) outOfRange += v.cQ() < 0 || v.cQ() >= triangles;
+  EXPECT_EQ(outOfRange, 0);
+  test::expectValidWithTopologyOf(test::recount(faceIndices(*out), out->cm.vn),
+                                  test::recount(bunny.triangles, bunny.vertexCount()));
+}
+
+TEST_F(FilterInProcess, SemiRegularAndBarycentricBadInputLeavesTheDocumentAlone) {
+  const TriMesh grid = test::planeGrid(10);
+  MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);
+  use("Remeshing: Geodesic Semi-Regular");
+  declare(*mm);
+  params.setValue(filters::param::kLevels, IntValue(7));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "Levels");
+  declare(*mm);
+  params.setValue(filters::param::kBaseVertices, IntValue(3));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "BaseVertices");
+  use("Parametrization: Geodesic Barycentric");
+  declare(*mm);
+  params.setValue(filters::param::kCentroidalIterations, IntValue(-1));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "CentroidalIterations");
+  EXPECT_EQ(doc.meshList.size(), 1u);
+}
+
 // --- Every filter over every mesh of the data set ----------------------------------------------
 
 /// The data set's mesh files that loadTriMesh reads as triangle meshes (point clouds left out).
@@ -1492,7 +1608,8 @@ TEST_P(FilterDataSetSweep, EveryFilterSucceedsOrFailsCleanly) {
        {"Geodesic Distance: Fast Marching from Selected Vertices", "Remeshing: Geodesic Uniform",
         "Remeshing: Geodesic Adaptive", "Compute Total Curvature (Normal Cycle) into Vertex Quality",
         "Segmentation: Geodesic Centroidal Tessellation", "Parametrization: Geodesic Texture Atlas",
-        "Parametrization: Geodesic LLE Flattening"}) {
+        "Parametrization: Geodesic LLE Flattening", "Remeshing: Geodesic Semi-Regular",
+        "Parametrization: Geodesic Barycentric"}) {
     SCOPED_TRACE(filter);
     use(filter);
     doc.setCurrent(mm);
@@ -1509,6 +1626,13 @@ TEST_P(FilterDataSetSweep, EveryFilterSucceedsOrFailsCleanly) {
     }
     if (std::string(filter).rfind("Segmentation", 0) == 0) {
       expectDiskRegions(*mm, logText());
+      continue;
+    }
+    if (std::string(filter) == "Parametrization: Geodesic Barycentric") {  // on a new layer
+      EXPECT_TRUE(Snapshot(*mm) == before) << "the input layer changed";
+      ASSERT_EQ(doc.meshList.size(), layers + 1);
+      const std::string text = logText();  // the whole run's log: this filter's line is the last
+      expectTiles(*doc.mm(), test::numberBefore(text.substr(text.rfind("Geodesic barycentric")), "base triangles"));
       continue;
     }
     if (std::string(filter).rfind("Parametrization", 0) == 0) {

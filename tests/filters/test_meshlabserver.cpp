@@ -611,5 +611,65 @@ TEST(Meshlabserver, LleFlatteningOfNefertitiHasNoFoldOrOverlap) {
   EXPECT_EQ(c.overlaps, 0);
 }
 
+// Semi-regular remesh through meshlabserver: resources/semi_regular_500_l3.mlx on bunny00. The
+// saved mesh recounted: every vertex past the base vertices (the log's count; they come first)
+// has six neighbours, the surface is closed, manifold, oriented, of genus 0, and each base
+// triangle became 64 faces.
+TEST(Meshlabserver, SemiRegularRemeshOfBunnyHasSubdivisionConnectivity) {
+  const std::string out = kOut + "bunny00_semi_regular.ply";
+  std::remove(out.c_str());
+  const ServerRun run = meshlabserver("-i '" + test::meshPath("bunny00.off") + "' -o '" + out + "' -s '" + kResources +
+                                      "semi_regular_500_l3.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const int base = test::numberBefore(run.output, "base vertices (");
+  const int baseTriangles = test::numberBefore(run.output, "base triangles");
+  ASSERT_GE(base, 500) << run.output;
+  EXPECT_NE(run.output.find("Time:"), std::string::npos);
+  const auto result = loadTriMesh(out);
+  ASSERT_TRUE(result) << result.status().message;
+  EXPECT_EQ(result->faceCount(), 64 * baseTriangles);
+  std::vector<std::set<int>> neighbours(result->vertexCount());
+  for (const Tri& t : result->triangles)
+    for (int k = 0; k < 3; ++k) {
+      neighbours[t[k]].insert(t[(k + 1) % 3]);
+      neighbours[t[(k + 1) % 3]].insert(t[k]);
+    }
+  int irregular = 0;
+  for (int v = base; v < result->vertexCount(); ++v) irregular += neighbours[v].size() != 6;
+  EXPECT_EQ(irregular, 0);
+  const test::Recount r = test::recount(result->triangles, result->vertexCount());
+  EXPECT_TRUE(r.closedManifoldEdges && r.oriented && r.manifoldVertices);
+  EXPECT_EQ(r.components, 1);
+  EXPECT_EQ(r.genusSum, 0);
+}
+
+// Geodesic barycentric parameterisation through meshlabserver: resources/geodesic_barycentric_100.mlx
+// on a copy of fandisk, saved as OBJ with wedge texture coordinates: no flipped, degenerate or
+// overlapping UV triangle, all in the unit square (one tile per base triangle), and the material
+// names the checkerboard, which exists.
+TEST(Meshlabserver, GeodesicBarycentricOfFandiskAsObjWithTiles) {
+  const std::string in = copyToOutput("fandisk.off"), out = kOut + "fandisk_barycentric.obj";
+  std::remove(out.c_str());
+  const ServerRun run =
+      meshlabserver("-i '" + in + "' -o '" + out + "' -m wt -s '" + kResources + "geodesic_barycentric_100.mlx'");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("no flipped triangle"), std::string::npos) << run.output;
+  std::string mtl, line;
+  const std::vector<std::array<Eigen::Vector2d, 3>> triangles = readObjUvTriangles(out, &mtl);
+  ASSERT_GE(triangles.size(), 12946u);  // fandisk's faces, some split by the cut
+  const oracle::UvAtlasCheck c = oracle::checkUvAtlas(triangles);
+  EXPECT_EQ(c.flipped, 0);
+  EXPECT_EQ(c.zeroArea, 0);
+  EXPECT_EQ(c.overlaps, 0);
+  EXPECT_EQ(c.outsideUnitSquare, 0);
+  ASSERT_FALSE(mtl.empty());
+  std::ifstream material(kOut + mtl);
+  std::string texture;
+  while (std::getline(material, line))
+    if (line.rfind("map_Kd", 0) == 0) texture = line.substr(7);
+  ASSERT_FALSE(texture.empty()) << "no map_Kd in " << mtl;
+  EXPECT_TRUE(std::ifstream(texture[0] == '/' ? texture : kOut + texture).good()) << texture;
+}
+
 }  // namespace
 }  // namespace gr

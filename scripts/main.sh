@@ -55,6 +55,8 @@ run() {  # run <script.mlx> <output.ply> <what the output holds> [input mesh, de
   if [[ $out == *.obj ]]; then
     nv=$(grep -c '^v ' "$out")
     nf=$(grep -c '^f ' "$out")
+  elif [[ $out == *.off ]]; then
+    read -r nv nf _ < <(sed -n 2p "$out")
   else
     nv=$(grep -a -m1 '^element vertex' "$out" | awk '{print $3}')
     nf=$(grep -a -m1 '^element face' "$out" | awk '{print $3}')

@@ -38,7 +38,8 @@ struct SemiRegularParams {
   /// 26.9 / 28.6 / 28.6 / 28.6 degrees, armadillo 14.6 / 16.5 / 17.7 / 19.7 (about 15 ms a round
   /// on bunny00).
   int relaxationRounds = 10;
-  /// Measure the two-sided Hausdorff distance to the input (surfaceDistance both ways, measure/).
+  /// Measure the two-sided Hausdorff distance to the input (surfaceDistance both ways, measure/;
+  /// SemiRegularResult::hausdorff).
   bool measureDistance = true;
   static constexpr int kMaxLevels = 6;
   static constexpr double kMaxFaces = 50e6;  ///< larger outputs are refused before any work
@@ -58,7 +59,9 @@ struct SemiRegularResult {
   int repairedPieces = 0;     ///< pieces mapped by mean value coordinates (Heron's folded)
   int relaxationMoves = 0;
   int reorientedFaces = 0;  ///< input faces turned to agree with their neighbours
-  double hausdorff = 0.0;   ///< two-sided, vertices, midpoints and centroids of both (measureDistance)
+  /// Two-sided (measureDistance): from the output's vertices, edge midpoints and face centroids to
+  /// the input, and from the input's vertices to the output.
+  double hausdorff = 0.0;
 };
 
 /// Fails with InvalidInput on levels outside 0..kMaxLevels or an output over kMaxFaces faces

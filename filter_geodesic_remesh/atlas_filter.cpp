@@ -13,10 +13,6 @@
 namespace gr::filters {
 namespace {
 
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
 void writeWedgeUv(MeshModel& mm, const adapters::CoreView& view, const std::vector<Vec2>& cornerUv) {
   mm.updateDataMask(MeshModel::MM_WEDGTEXCOORD);
   for (int f = 0; f < view.mesh.faceCount(); ++f) {

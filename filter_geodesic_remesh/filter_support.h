@@ -4,6 +4,7 @@
 
 #include <common/interfaces.h>
 
+#include <chrono>
 #include <functional>
 #include <string>
 
@@ -23,6 +24,11 @@ Expected<CurrentMesh> currentMesh(MeshDocument& doc);
 /// Runs `apply` and turns an exception escaping it into a Status, so that MeshLab never sees one:
 /// std::bad_alloc -> OutOfMemory ("out of memory"), any other -> Internal ("internal error: ...").
 Status runCatchingExceptions(const std::function<Status()>& apply);
+
+/// Milliseconds from `start` to now (the log's Time line).
+inline double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
 
 /// A checkerboard of `squares` x `squares` squares, `size` texels a side, written next to the mesh's file as
 /// <its name><suffix> (or in the temporary folder for a mesh without one): the absolute path, or an

@@ -13,10 +13,6 @@
 namespace gr::filters {
 namespace {
 
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
 void declareBase(RichParameterList& params, const BaseDomainParams& d, const QString& what) {
   params.addParam(RichInt(param::kBaseVertices, d.baseVertices, "Base vertices",
                           "Farthest-point samples of the base domain (its geodesic Delaunay triangulation " + what +
@@ -97,8 +93,7 @@ Status applySemiRegular(MeshDocument& doc, const RichParameterList& params, Filt
 
 void declareGeodesicBarycentric(const MeshModel& /*mesh*/, RichParameterList& params) {
   const ParameterizationParams d;
-  BaseDomainParams base = d.base;
-  declareBase(params, base, "is the parameter domain, one texture tile per base triangle");
+  declareBase(params, d.base, "is the parameter domain, one texture tile per base triangle");
 }
 
 Status applyGeodesicBarycentric(MeshDocument& doc, const RichParameterList& params, FilterContext& ctx) {

@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include "core/flatten/arap_relaxation.h"
+#include "core/mesh/face_geometry.h"
 
 namespace gr {
 namespace {
@@ -160,14 +161,6 @@ Expected<std::vector<Piece>> flattenRegions(const TriMesh& mesh, const std::vect
   return pieces;
 }
 
-/// Whether the UV triangle abc is counter-clockwise for certain: the determinant's sign is the
-/// exact one (Shewchuk's error bound for orient2d), so any exact judge agrees.
-bool surelyCounterClockwise(const Vec2& a, const Vec2& b, const Vec2& c) {
-  const double left = (a.x() - c.x()) * (b.y() - c.y()), right = (a.y() - c.y()) * (b.x() - c.x());
-  const double bound = 3.3306690738754716e-16 * (std::abs(left) + std::abs(right));
-  return left - right > bound;
-}
-
 /// How far apart, in the unit square, a chart's boundary edges must stay at the UVs written: far
 /// below a texel, far above float rounding (2^-24), so that no exact judge sees them cross.
 constexpr double kWrittenClearance = 1e-6;
@@ -215,15 +208,6 @@ int splitUnsurePieces(const TriMesh& mesh, std::vector<Piece>& pieces, const std
   }
   pieces = std::move(kept);
   return split;
-}
-
-/// x rounded to the nearest float. Through a volatile float: GCC 12 folds double(float(x)) away
-/// where the result goes straight into an Eigen vector's constructor (measured: no conversion
-/// left in the object code, so the orientation checks judged unrounded UVs and MeshLab's floats
-/// could turn a thin triangle over).
-double roundedToFloat(double x) {
-  volatile float rounded = static_cast<float>(x);
-  return rounded;
 }
 
 /// Every piece turned to its minimal rectangle, packed; the UVs written per input corner.

@@ -3,6 +3,7 @@
 
 #include <Eigen/Geometry>
 
+#include <cmath>
 #include <vector>
 
 #include "core/mesh/tri_mesh.h"
@@ -65,5 +66,22 @@ class CornerLengths {
   const TriMesh& mesh_;
   const std::vector<double>* given_;
 };
+
+/// x rounded to the nearest float, as MeshLab holds texture coordinates. Through a volatile float:
+/// GCC 12 folds double(float(x)) away where the result goes straight into an Eigen vector's
+/// constructor (measured: no conversion left in the object code, so orientation checks judged
+/// unrounded UVs and MeshLab's floats could turn a thin triangle over).
+inline double roundedToFloat(double x) {
+  volatile float rounded = static_cast<float>(x);
+  return rounded;
+}
+
+/// Whether the 2D triangle abc is counter-clockwise for certain: the determinant's sign is the
+/// exact one (Shewchuk's error bound for orient2d), so any exact judge agrees.
+inline bool surelyCounterClockwise(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  const double left = (a.x() - c.x()) * (b.y() - c.y()), right = (a.y() - c.y()) * (b.x() - c.x());
+  const double bound = 3.3306690738754716e-16 * (std::abs(left) + std::abs(right));
+  return left - right > bound;
+}
 
 }  // namespace gr

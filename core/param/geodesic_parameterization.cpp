@@ -9,6 +9,7 @@
 
 #include "core/geodesic/fast_marching.h"
 #include "core/geodesic/metric.h"
+#include "core/mesh/face_geometry.h"
 #include "core/mesh/orientation.h"
 #include "core/param/geodesic_barycentric.h"
 
@@ -173,19 +174,6 @@ struct Tile {
   Vec2 origin;
   double size = 1.0;
 };
-
-/// x rounded to the nearest float (through a volatile: GCC folds double(float(x)) away otherwise,
-/// as core/atlas/texture_atlas.cpp found).
-double roundedToFloat(double x) {
-  volatile float rounded = static_cast<float>(x);
-  return static_cast<double>(rounded);
-}
-
-/// a, b, c counter-clockwise beyond the rounding of the orientation's own arithmetic.
-bool surelyCounterClockwise(const Vec2& a, const Vec2& b, const Vec2& c) {
-  const double left = (a.x() - c.x()) * (b.y() - c.y()), right = (a.y() - c.y()) * (b.x() - c.x());
-  return left - right > 3.3306690738754716e-16 * (std::abs(left) + std::abs(right));
-}
 
 /// tiledUv's grid: g x g tiles for `triangles` base triangles.
 int tileGrid(int triangles) {

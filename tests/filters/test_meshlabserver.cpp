@@ -556,6 +556,23 @@ std::string copyToOutput(const std::string& name) {
   return copy;
 }
 
+/// The OBJ's UV triangles judged by the atlas oracle (no flip, no zero area, no overlap, all in the
+/// unit square), and its material `mtl` naming a texture that exists.
+void expectAtlasWithTexture(const std::vector<std::array<Eigen::Vector2d, 3>>& triangles, const std::string& mtl) {
+  const oracle::UvAtlasCheck c = oracle::checkUvAtlas(triangles);
+  EXPECT_EQ(c.flipped, 0);
+  EXPECT_EQ(c.zeroArea, 0);
+  EXPECT_EQ(c.overlaps, 0);
+  EXPECT_EQ(c.outsideUnitSquare, 0);
+  ASSERT_FALSE(mtl.empty());
+  std::ifstream material(kOut + mtl);
+  std::string texture, line;
+  while (std::getline(material, line))
+    if (line.rfind("map_Kd", 0) == 0) texture = line.substr(7);
+  ASSERT_FALSE(texture.empty()) << "no map_Kd in " << mtl;
+  EXPECT_TRUE(std::ifstream(texture[0] == '/' ? texture : kOut + texture).good()) << texture;
+}
+
 // Texture atlas through meshlabserver: resources/texture_atlas.mlx on a copy of fandisk, saved as
 // OBJ with wedge texture coordinates (-m wt). The OBJ's UV triangles judged by the atlas oracle
 // (no flip, no overlap, all in the unit square), and its material names the checkerboard PNG,
@@ -568,21 +585,10 @@ TEST(Meshlabserver, TextureAtlasOfFandiskAsObjMtlPng) {
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("charts"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("Time:"), std::string::npos);
-  std::string mtl, line;
+  std::string mtl;
   const std::vector<std::array<Eigen::Vector2d, 3>> triangles = readObjUvTriangles(out, &mtl);
   ASSERT_EQ(triangles.size(), 12946u);  // fandisk's faces, all with UVs
-  const oracle::UvAtlasCheck c = oracle::checkUvAtlas(triangles);
-  EXPECT_EQ(c.flipped, 0);
-  EXPECT_EQ(c.zeroArea, 0);
-  EXPECT_EQ(c.overlaps, 0);
-  EXPECT_EQ(c.outsideUnitSquare, 0);
-  ASSERT_FALSE(mtl.empty());
-  std::ifstream material(kOut + mtl);
-  std::string texture;
-  while (std::getline(material, line))
-    if (line.rfind("map_Kd", 0) == 0) texture = line.substr(7);
-  ASSERT_FALSE(texture.empty()) << "no map_Kd in " << mtl;
-  EXPECT_TRUE(std::ifstream(texture[0] == '/' ? texture : kOut + texture).good()) << texture;
+  expectAtlasWithTexture(triangles, mtl);
 }
 
 // Geodesic LLE flattening through meshlabserver: resources/lle_flattening.mlx on nefertiti.off (a
@@ -654,21 +660,10 @@ TEST(Meshlabserver, GeodesicBarycentricOfFandiskAsObjWithTiles) {
       meshlabserver("-i '" + in + "' -o '" + out + "' -m wt -s '" + kResources + "geodesic_barycentric_100.mlx'");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("no flipped triangle"), std::string::npos) << run.output;
-  std::string mtl, line;
+  std::string mtl;
   const std::vector<std::array<Eigen::Vector2d, 3>> triangles = readObjUvTriangles(out, &mtl);
   ASSERT_GE(triangles.size(), 12946u);  // fandisk's faces, some split by the cut
-  const oracle::UvAtlasCheck c = oracle::checkUvAtlas(triangles);
-  EXPECT_EQ(c.flipped, 0);
-  EXPECT_EQ(c.zeroArea, 0);
-  EXPECT_EQ(c.overlaps, 0);
-  EXPECT_EQ(c.outsideUnitSquare, 0);
-  ASSERT_FALSE(mtl.empty());
-  std::ifstream material(kOut + mtl);
-  std::string texture;
-  while (std::getline(material, line))
-    if (line.rfind("map_Kd", 0) == 0) texture = line.substr(7);
-  ASSERT_FALSE(texture.empty()) << "no map_Kd in " << mtl;
-  EXPECT_TRUE(std::ifstream(texture[0] == '/' ? texture : kOut + texture).good()) << texture;
+  expectAtlasWithTexture(triangles, mtl);
 }
 
 }  // namespace

@@ -44,6 +44,10 @@ constexpr double kCurvatureRadiusInSpacings = 0.5;
 constexpr double kCurvatureRadiusInEdges = 3.0;
 constexpr int kSamplesPerSampleIn3d = 64;
 constexpr int kSamplesIn3d = 16;
+/// The cut gives up when its splits have made the surface this many times the input's faces: the
+/// paths' rounds make slow progress on a mesh too coarse for its base (cad_gear of tests/support,
+/// 1,040 vertices, 500 base vertices: over two minutes, the surface growing each round).
+constexpr size_t kMaxFacesPerInputFace = 32;
 /// Rounds in a row that route none of the blocked edges before the routing gives up.
 constexpr int kMaxStalledRounds = 3;
 
@@ -682,6 +686,12 @@ Expected<BasePieces> cutIntoBasePieces(const TriMesh& input, const BaseDomain& b
                                                   " base edges found no way between the paths already cut, e.g. " +
                                                   edgeName(graph.edges[failed.front()])};
     out.splitEdges += splitEdges(work, edgesBetweenPaths(*mesh, router.cut(), out.path, base.baseVertex));
+    if (work.triangles.size() > kMaxFacesPerInputFace * static_cast<size_t>(input.faceCount()))
+      return Status{StatusCode::NotConverged,
+                    "geodesic parameterisation: cutting the surface along " + std::to_string(failed.size()) +
+                        " more base edges would take more than " + std::to_string(kMaxFacesPerInputFace) +
+                        " times the input's faces: the mesh is too coarse for " +
+                        std::to_string(base.baseVertex.size()) + " base vertices (ask for fewer BaseVertices)"};
     mesh = buildTriMesh(work.positions, work.triangles);
     if (!mesh) return mesh.status();
     pending = std::move(failed);

@@ -76,8 +76,9 @@ struct BasePieces {
 /// Cuts `input` (manifold, coherently oriented, the mesh `base` was built on) along paths of
 /// edges into one disk per base triangle. Fails with InvalidInput on a base that does not fit
 /// the input (sizes, a corner out of range), and with NotConverged naming the base edge when a
-/// path finds no way between the paths already cut, or a piece is not the disk of one base
-/// triangle; Cancelled if asked.
+/// path finds no way between the paths already cut, the splits that make room for the paths would
+/// take the surface past 32 times the input's faces (a mesh too coarse for its base), or a piece
+/// is not the disk of one base triangle; Cancelled if asked.
 Expected<BasePieces> cutIntoBasePieces(const TriMesh& input, const BaseDomain& base, Progress progress = {});
 
 }  // namespace gr

@@ -106,24 +106,12 @@ Status applyGeodesicBarycentric(MeshDocument& doc, const RichParameterList& para
   if (!r) return r.status();
   const std::vector<Vec2> uv = tiledUv(*r);
   const TriMesh& cut = r->pieces.mesh;
-  std::vector<SurfacePoint> origin(cut.vertexCount());
-  for (int v = 0; v < current->view.mesh.vertexCount(); ++v)  // the input's, isolated ones included
-    origin[v] = SurfacePoint::atVertex(v);
-  for (int f = 0; f < cut.faceCount(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      Vec3 b = r->pieces.cornerBary[3 * f + k];
-      if (r->flipped[r->pieces.originalFace[f]]) std::swap(b[1], b[2]);
-      origin[cut.triangles[f][k]] = SurfacePoint::inFace(r->pieces.originalFace[f], b);
-    }
   MeshModel& mm = *current->model;  // commit
   const QString label = mm.label() + " - geodesic barycentric";
   MeshModel* out = doc.addNewMesh("", label, true);
   out->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR | MeshModel::MM_WEDGTEXCOORD);
-  adapters::writeMesh(cut, out->cm, mm.cm, current->view, origin, false, false);
-  std::vector<int> triangleOfVertex(cut.vertexCount(), -1);
-  for (int f = 0; f < cut.faceCount(); ++f)
-    for (int v : cut.triangles[f])
-      if (triangleOfVertex[v] < 0) triangleOfVertex[v] = r->pieces.triangle[f];
+  adapters::writeMesh(cut, out->cm, mm.cm, current->view, cutVertexOrigins(*r), false, false);
+  const std::vector<int> triangleOfVertex = baseTriangleOfVertex(*r);
   adapters::CoreView outView;
   for (int v = 0; v < cut.vertexCount(); ++v) outView.map.vcgOfCoreVertex.push_back(v);
   adapters::writeVertexQuality(out->cm, outView, std::vector<double>(triangleOfVertex.begin(), triangleOfVertex.end()),

@@ -436,4 +436,26 @@ std::vector<Vec2> tiledUv(const Parameterization& par) {
   return uv;
 }
 
+std::vector<SurfacePoint> cutVertexOrigins(const Parameterization& par) {
+  const TriMesh& cut = par.pieces.mesh;
+  std::vector<SurfacePoint> origin(cut.vertexCount());
+  for (int v = 0; v < par.input.vertexCount(); ++v) origin[v] = SurfacePoint::atVertex(v);
+  for (int f = 0; f < cut.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      Vec3 b = par.pieces.cornerBary[3 * f + k];
+      if (par.flipped[par.pieces.originalFace[f]]) std::swap(b[1], b[2]);  // corners 1, 2 as given
+      origin[cut.triangles[f][k]] = SurfacePoint::inFace(par.pieces.originalFace[f], b);
+    }
+  return origin;
+}
+
+std::vector<int> baseTriangleOfVertex(const Parameterization& par) {
+  const TriMesh& cut = par.pieces.mesh;
+  std::vector<int> triangle(cut.vertexCount(), -1);
+  for (int f = 0; f < cut.faceCount(); ++f)
+    for (int v : cut.triangles[f])
+      if (triangle[v] < 0) triangle[v] = par.pieces.triangle[f];
+  return triangle;
+}
+
 }  // namespace gr

@@ -24,6 +24,7 @@
 
 #include "core/base/progress.h"
 #include "core/base/status.h"
+#include "core/mesh/surface_point.h"
 #include "core/mesh/tri_mesh.h"
 #include "core/param/base_pieces.h"
 
@@ -71,5 +72,12 @@ constexpr double kTileMargin = 0.05;
 /// there also once the coordinates are rounded to float, as MeshLab holds them (the maps are
 /// judged so).
 std::vector<Vec2> tiledUv(const Parameterization& par);
+
+/// Per vertex of pieces.mesh, the point of the input as given (not its oriented copy) it lies on:
+/// the input's own vertices first (isolated ones included), then the points the cut added.
+std::vector<SurfacePoint> cutVertexOrigins(const Parameterization& par);
+
+/// Per vertex of pieces.mesh, the base triangle of one of its faces (-1 for a vertex in no face).
+std::vector<int> baseTriangleOfVertex(const Parameterization& par);
 
 }  // namespace gr

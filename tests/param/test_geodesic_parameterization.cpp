@@ -59,6 +59,19 @@ void expectSurfaceIsTheInput(const TriMesh& input, const Parameterization& p) {
     }
   }
   EXPECT_LT(worst, 1e-9 * diagonal) << "a cut vertex is not where its barycentric coordinates put it";
+  // cutVertexOrigins (what the filter writes from): each vertex's point on the input as given.
+  const std::vector<SurfacePoint> origin = cutVertexOrigins(p);
+  double worstOrigin = 0.0;
+  for (int v = 0; v < cut.vertexCount(); ++v) {
+    const SurfacePoint& o = origin[v];
+    Vec3 at = Vec3::Zero();
+    if (o.vertex >= 0)
+      at = input.positions[o.vertex];
+    else
+      for (int k = 0; k < 3; ++k) at += o.bary[k] * input.positions[input.triangles[o.face][k]];
+    worstOrigin = std::max(worstOrigin, (at - cut.positions[v]).norm());
+  }
+  EXPECT_LT(worstOrigin, 1e-9 * diagonal) << "an origin is not on its cut vertex";
   EXPECT_NEAR(cutArea, inputArea, 1e-9 * inputArea);
 }
 

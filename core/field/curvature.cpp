@@ -5,8 +5,11 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <string>
+
+#include "core/base/two_threads.h"
 
 namespace gr {
 namespace {
@@ -357,28 +360,42 @@ Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvaturePar
   result.k1.assign(n, 0.0);
   result.k2.assign(n, 0.0);
 
-  Ball ball;
-  ball.seenBy.assign(n, -1);
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-  long totalSize = 0;
-  for (int v = 0; v < n; ++v) {
-    if ((v & 4095) == 0 && !progress.report(double(v) / n, "Curvature")) return cancelled();
-    if (local.begin[v] == local.begin[v + 1]) continue;  // isolated vertex
-    // The 1-ring: its distances give the ball's radius, the requested one or the 1-ring's (mean
-    // distance to the neighbours).
-    const double ringRadius = startWithOneRing(local, v, ball);
-    const double r = std::max(radius, ringRadius);
-    if (radius <= ringRadius) ++result.oneRingRadius;
-    weighOneRing(local, r, ball);
-    growBall(local, v, r, ball);
-    totalSize += static_cast<long>(ball.queue.size());
-    double a, b;
-    if (!principalCurvatures(local, v, ball, solver, a, b)) continue;
-    const int original = local.original[v];
-    result.k1[original] = a;
-    result.k2[original] = b;
-    result.tau[original] = std::abs(a) + std::abs(b);
-  }
+  // The vertices in two halves of the local order, the second on a helper thread: each ball
+  // reads the mesh only and writes its own vertex (1.66M vertices, radius 3 edges: 3.7 s on one).
+  struct Share {
+    long totalSize = 0;
+    int oneRingRadius = 0;
+  };
+  std::array<Share, 2> shares;
+  std::atomic<bool> stop{false};
+  onTwoThreads([&](bool helper) {
+    Share& share = shares[helper];
+    Ball ball;
+    ball.seenBy.assign(n, -1);
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+    const int first = helper ? n / 2 : 0, last = helper ? n : n / 2;
+    for (int v = first; v < last && !stop; ++v) {
+      if (!helper && (v & 4095) == 0 && !progress.report(double(v) / last, "Curvature")) stop = true;
+      if (local.begin[v] == local.begin[v + 1]) continue;  // isolated vertex
+      // The 1-ring: its distances give the ball's radius, the requested one or the 1-ring's
+      // (mean distance to the neighbours).
+      const double ringRadius = startWithOneRing(local, v, ball);
+      const double r = std::max(radius, ringRadius);
+      if (radius <= ringRadius) ++share.oneRingRadius;
+      weighOneRing(local, r, ball);
+      growBall(local, v, r, ball);
+      share.totalSize += static_cast<long>(ball.queue.size());
+      double a, b;
+      if (!principalCurvatures(local, v, ball, solver, a, b)) continue;
+      const int original = local.original[v];
+      result.k1[original] = a;
+      result.k2[original] = b;
+      result.tau[original] = std::abs(a) + std::abs(b);
+    }
+  });
+  if (stop) return cancelled();
+  result.oneRingRadius = shares[0].oneRingRadius + shares[1].oneRingRadius;
+  const long totalSize = shares[0].totalSize + shares[1].totalSize;
   result.meanNeighbourhoodSize = double(totalSize) / n;
   result.looseFaces = mesh.looseFaceCount();
   result.looksLikeTriangleSoup = TriMesh::looksLikeTriangleSoup(result.looseFaces, mesh.faceCount());

@@ -53,8 +53,8 @@
 // where two eigenvalues coincide, e.g. 0 and 0 on a cylinder or a sharp edge, its relative error
 // is about 1e-8). Internally the vertices are renumbered in the order the faces first reach them
 // (face order is usually spatially coherent, vertex order after subdivision is not), so a ball's
-// vertices are near each other in memory (times: docs/BENCHMARKS.md). Memory: about 300 bytes
-// per vertex, freed on return.
+// vertices are near each other in memory, and the balls run on two threads, half the vertices
+// each (times: docs/BENCHMARKS.md). Memory: about 300 bytes per vertex, freed on return.
 #pragma once
 
 #include <vector>

@@ -5,8 +5,8 @@
 #include <limits>
 #include <string>
 
-#include "core/measure/evaluation.h"
 #include "core/param/geodesic_parameterization.h"
+#include "core/remesh/remesh_distance.h"
 #include "core/remesh/surface_relaxation.h"
 
 namespace gr {
@@ -113,6 +113,22 @@ void locateInside(const Parameterization& par, const Layout& l, std::vector<Surf
   }
 }
 
+/// Per input vertex, the output vertex at the lattice point nearest its parameter: the output's
+/// faces around it are where remeshDistances looks for the vertex's nearest point first.
+std::vector<int> nearestLatticeVertex(const Parameterization& par, const Layout& l) {
+  const TriMesh& cut = par.pieces.mesh;
+  std::vector<int> cell(par.input.vertexCount(), -1);
+  for (int c = 0; c < 3 * cut.faceCount(); ++c) {
+    const int v = cut.vertex(c);  // the cut keeps the input's vertex numbers, then adds its own
+    if (v >= par.input.vertexCount() || cell[v] >= 0) continue;
+    const Vec2 uv = par.cornerUv[c] * l.n;
+    const int a = std::clamp(static_cast<int>(std::lround(uv.x())), 0, l.n);
+    const int b = std::clamp(static_cast<int>(std::lround(uv.y())), 0, l.n - a);
+    cell[v] = latticeVertex(par, l, par.pieces.triangle[TriMesh::face(c)], a, b);
+  }
+  return cell;
+}
+
 }  // namespace
 
 Expected<SemiRegularResult> semiRegularRemesh(const TriMesh& input, const SemiRegularParams& params,
@@ -167,10 +183,11 @@ Expected<SemiRegularResult> semiRegularRemesh(const TriMesh& input, const SemiRe
   }
   if (params.measureDistance) {
     if (!progress.report(0.95, "Measuring the distance to the input")) return cancelled();
-    // The input's vertices suffice one way (the input is the finer mesh): 1.66M vertices against
-    // about 10M samples with its edge midpoints and face centroids.
-    r.hausdorff = std::max(surfaceDistance(*mesh, par->input).max,
-                           surfaceDistance(par->input, *mesh, {}, 0, DistanceSamples::Vertices).max);
+    // At surfaceDistance's samples, bounded near where each sample lies (the output's vertices'
+    // origins, the input's vertices' lattice points) and the largest made exact: on armadillo
+    // subdivided to 1.66M vertices (5,000 base vertices, 3 levels) 3.9 s by the grid both ways.
+    const RemeshDistances d = remeshDistances(par->input, *mesh, nearestLatticeVertex(*par, l), origin);
+    r.hausdorff = std::max(d.toInput.max, d.fromInput.max);
   }
   for (SurfacePoint& p : origin)  // on the input as given: a flipped face has corners 1 and 2 swapped
     if (p.face >= 0 && par->flipped[p.face]) std::swap(p.bary[1], p.bary[2]);

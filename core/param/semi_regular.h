@@ -38,8 +38,9 @@ struct SemiRegularParams {
   /// 26.9 / 28.6 / 28.6 / 28.6 degrees, armadillo 14.6 / 16.5 / 17.7 / 19.7 (about 15 ms a round
   /// on bunny00).
   int relaxationRounds = 10;
-  /// Measure the two-sided Hausdorff distance to the input (surfaceDistance both ways, measure/;
-  /// SemiRegularResult::hausdorff).
+  /// Measure the two-sided Hausdorff distance to the input (SemiRegularResult::hausdorff), at
+  /// surfaceDistance's samples (measure/) by remeshDistances (remesh/remesh_distance.h): each
+  /// sample bounded near where it lies, the largest made exact.
   bool measureDistance = true;
   static constexpr int kMaxLevels = 6;
   static constexpr double kMaxFaces = 50e6;  ///< larger outputs are refused before any work

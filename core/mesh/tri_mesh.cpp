@@ -339,6 +339,18 @@ Expected<TriMesh> buildTriMesh(std::vector<Vec3> positions, std::vector<Tri> tri
   return m;
 }
 
+Expected<TriMesh> buildAdjacency(std::vector<Vec3> positions, std::vector<Tri> triangles) {
+  if (Status s = validate(positions, triangles); !s) return s;
+  TriMesh m;
+  m.positions = std::move(positions);
+  m.triangles = std::move(triangles);
+  rebuildVertexCorners(m);
+  buildOppositeCorners(m, starNeighbours(m));
+  return m;
+}
+
+void countTopology(TriMesh& mesh) { countTopology(mesh, starNeighbours(mesh)); }
+
 std::string Topology::nonManifoldCounts() const {
   return std::to_string(nonManifoldEdges) + " non-manifold edges and " + std::to_string(nonManifoldVertices) +
          " non-manifold vertices";

@@ -71,11 +71,15 @@ struct Work {
 
 Work initialWork(const TriMesh& input, const std::vector<int>& cell) {
   Work w;
+  // The splits append faces: room for a quarter more without moving the arrays.
+  const size_t room = input.triangles.size() + input.triangles.size() / 4;
+  w.triangles.reserve(room);
+  w.originalFace.reserve(room);
   w.positions = input.positions;
-  w.triangles = input.triangles;
+  w.triangles.assign(input.triangles.begin(), input.triangles.end());
   w.originalFace.resize(input.faceCount());
   std::iota(w.originalFace.begin(), w.originalFace.end(), 0);
-  w.cornerBary.reserve(3 * input.faceCount());
+  w.cornerBary.reserve(3 * room);
   for (int f = 0; f < input.faceCount(); ++f)
     for (int k = 0; k < 3; ++k) w.cornerBary.push_back(Vec3::Unit(k));
   w.cell = cell;
@@ -83,34 +87,32 @@ Work initialWork(const TriMesh& input, const std::vector<int>& cell) {
 }
 
 /// Splits `edges` (vertex pairs, repeats allowed) at their midpoints: a face with one, two or three
-/// of them becomes two, three or four faces, oriented as it was. Vertices keep their numbers.
+/// of them becomes two, three or four faces, oriented as it was, the first in its place and the
+/// others appended (the faces of the surface are not copied: 88 bytes each with their corners'
+/// barycentrics, 3.4M faces on armadillo subdivided to 1.66M vertices). Vertices keep their
+/// numbers.
 int splitEdges(Work& w, const std::vector<std::pair<int, int>>& edges) {
   std::unordered_map<uint64_t, int> mid;
   mid.reserve(2 * edges.size());
+  std::vector<char> touched(w.positions.size(), 0);  // an end of a split edge
   for (const auto& [a, b] : edges)
     if (mid.emplace(edgeKey(a, b), static_cast<int>(w.positions.size())).second) {
       w.positions.push_back(0.5 * (w.positions[a] + w.positions[b]));
       w.cell.push_back(w.cell[a]);
+      touched[a] = touched[b] = 1;
     }
   if (mid.empty()) return 0;
-  std::vector<Tri> tris;
-  std::vector<int> orig;
-  std::vector<Vec3> bary;
   struct P {
     int v;
     Vec3 b;
   };
-  auto emit = [&](const P& x, const P& y, const P& z, int f) {
-    tris.push_back({x.v, y.v, z.v});
-    orig.push_back(w.originalFace[f]);
-    bary.push_back(x.b);
-    bary.push_back(y.b);
-    bary.push_back(z.b);
-  };
-  for (int f = 0; f < static_cast<int>(w.triangles.size()); ++f) {
+  const int faces = static_cast<int>(w.triangles.size());
+  for (int f = 0; f < faces; ++f) {
+    const Tri t = w.triangles[f];
+    if (touched[t[0]] + touched[t[1]] + touched[t[2]] < 2) continue;
     P p[3], m[3];
     int split = 0, unsplit = 0;
-    for (int k = 0; k < 3; ++k) p[k] = {w.triangles[f][k], w.cornerBary[3 * f + k]};
+    for (int k = 0; k < 3; ++k) p[k] = {t[k], w.cornerBary[3 * f + k]};
     for (int k = 0; k < 3; ++k) {
       const auto it = mid.find(edgeKey(p[(k + 1) % 3].v, p[(k + 2) % 3].v));
       m[k] = {it == mid.end() ? -1 : it->second, 0.5 * (p[(k + 1) % 3].b + p[(k + 2) % 3].b)};
@@ -119,27 +121,40 @@ int splitEdges(Work& w, const std::vector<std::pair<int, int>>& edges) {
       else
         unsplit = k;
     }
-    if (split == 0) {
-      emit(p[0], p[1], p[2], f);
-    } else if (split == 1) {
+    if (split == 0) continue;
+    const int original = w.originalFace[f];
+    bool first = true;
+    auto emit = [&](const P& x, const P& y, const P& z) {
+      if (first) {
+        w.triangles[f] = {x.v, y.v, z.v};
+        w.cornerBary[3 * f] = x.b;
+        w.cornerBary[3 * f + 1] = y.b;
+        w.cornerBary[3 * f + 2] = z.b;
+        first = false;
+        return;
+      }
+      w.triangles.push_back({x.v, y.v, z.v});
+      w.originalFace.push_back(original);
+      w.cornerBary.push_back(x.b);
+      w.cornerBary.push_back(y.b);
+      w.cornerBary.push_back(z.b);
+    };
+    if (split == 1) {
       const int k = m[0].v >= 0 ? 0 : (m[1].v >= 0 ? 1 : 2);
-      emit(p[k], p[(k + 1) % 3], m[k], f);
-      emit(p[k], m[k], p[(k + 2) % 3], f);
+      emit(p[k], p[(k + 1) % 3], m[k]);
+      emit(p[k], m[k], p[(k + 2) % 3]);
     } else if (split == 2) {
       const int k0 = unsplit, k1 = (k0 + 1) % 3, k2 = (k0 + 2) % 3;
-      emit(p[k0], m[k2], m[k1], f);
-      emit(m[k2], p[k1], p[k2], f);
-      emit(m[k2], p[k2], m[k1], f);
+      emit(p[k0], m[k2], m[k1]);
+      emit(m[k2], p[k1], p[k2]);
+      emit(m[k2], p[k2], m[k1]);
     } else {
-      emit(p[0], m[2], m[1], f);
-      emit(p[1], m[0], m[2], f);
-      emit(p[2], m[1], m[0], f);
-      emit(m[0], m[1], m[2], f);
+      emit(p[0], m[2], m[1]);
+      emit(p[1], m[0], m[2]);
+      emit(p[2], m[1], m[0]);
+      emit(m[0], m[1], m[2]);
     }
   }
-  w.triangles = std::move(tris);
-  w.originalFace = std::move(orig);
-  w.cornerBary = std::move(bary);
   return static_cast<int>(mid.size());
 }
 
@@ -628,22 +643,22 @@ Expected<BaseDomain> buildBaseDomain(const TriMesh& input, const BaseDomainParam
       farthestPointsIn3d(input, std::min(kSamplesIn3d, fps.targetCount / kSamplesPerSampleIn3d), params.seed);
   Expected<FpsResult> sampled = farthestPointSampling(marcher, fps, progress.sub(0.0, 0.3));
   if (!sampled) return sampled.status();
-  std::vector<int> samples = sampled->samples;
+  // The marcher holds the samples' field, sample i in cell i (as Lloyd leaves it too): the dual is
+  // read from it, with no new engine and no front over the whole surface again.
+  std::vector<SurfacePoint> samples = std::move(sampled->origin);
   if (params.centroidalIterations > 0) {
     LloydParams lloyd;
     lloyd.iterations = params.centroidalIterations;
     lloyd.vertexSeeds = true;
     lloyd.keepBoundarySeeds = true;
     lloyd.marcherHoldsSeedsField = true;
-    Expected<LloydResult> relaxed =
-        geodesicLloyd(input, metric, marcher, sampled->origin, lloyd, progress.sub(0.3, 0.6));
+    Expected<LloydResult> relaxed = geodesicLloyd(input, metric, marcher, samples, lloyd, progress.sub(0.3, 0.6));
     if (!relaxed) return relaxed.status();
-    samples.clear();
-    for (const SurfacePoint& s : relaxed->seeds) samples.push_back(s.vertex);
+    samples = std::move(relaxed->seeds);
   }
   DelaunayParams delaunay;
   delaunay.delaunayFlips = false;  // the base must stay the dual of the cells the paths follow
-  Expected<DelaunayResult> dual = geodesicDelaunay(input, metric, samples, delaunay, progress.sub(0.6, 1.0));
+  Expected<DelaunayResult> dual = geodesicDelaunay(marcher, std::move(samples), delaunay, progress.sub(0.6, 1.0));
   if (!dual) return dual.status();
   BaseDomain base;
   base.triangles = dual->mesh.triangles;
@@ -659,7 +674,7 @@ Expected<BasePieces> cutIntoBasePieces(const TriMesh& input, const BaseDomain& b
   Work work = initialWork(input, base.cell);
   BasePieces out;
   splitStars(work, base, graph, &out.splitEdges);
-  Expected<TriMesh> mesh = buildTriMesh(work.positions, work.triangles);
+  Expected<TriMesh> mesh = buildAdjacency(work.positions, work.triangles);
   if (!mesh) return mesh.status();
   // Phase 0: the boundary and a spanning tree, until all are routed; phase 1: the other edges.
   // A path of phase 1 routed while the tree misses an edge could pass a base vertex on its
@@ -692,7 +707,7 @@ Expected<BasePieces> cutIntoBasePieces(const TriMesh& input, const BaseDomain& b
                         " more base edges would take more than " + std::to_string(kMaxFacesPerInputFace) +
                         " times the input's faces: the mesh is too coarse for " +
                         std::to_string(base.baseVertex.size()) + " base vertices (ask for fewer BaseVertices)"};
-    mesh = buildTriMesh(work.positions, work.triangles);
+    mesh = buildAdjacency(work.positions, work.triangles);
     if (!mesh) return mesh.status();
     pending = std::move(failed);
   }
@@ -702,12 +717,13 @@ Expected<BasePieces> cutIntoBasePieces(const TriMesh& input, const BaseDomain& b
   const std::vector<std::pair<int, int>> toSplit = chords(*mesh, cut, base, graph, out.path);
   if (!toSplit.empty()) {
     out.splitEdges += splitEdges(work, toSplit);
-    mesh = buildTriMesh(work.positions, work.triangles);
+    mesh = buildAdjacency(work.positions, work.triangles);
     if (!mesh) return mesh.status();
     cut = cutFlags(*mesh, out.path);
     assigned = assignPieces(*mesh, cut, base, graph);
     if (!assigned) return assigned.status();
   }
+  countTopology(*mesh);  // the rounds built the adjacency only
   out.mesh = std::move(*mesh);
   out.originalFace = std::move(work.originalFace);
   out.cornerBary = std::move(work.cornerBary);

@@ -4,9 +4,12 @@
 #include <Eigen/SparseLU>
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <string>
 
+#include "core/base/two_threads.h"
 #include "core/geodesic/fast_marching.h"
 #include "core/geodesic/metric.h"
 #include "core/mesh/face_geometry.h"
@@ -70,33 +73,53 @@ Expected<Fronts> runFronts(const BasePieces& cut, const BaseDomain& base, std::v
   for (size_t t = 0; t < base.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) star[base.triangles[t][k]].emplace_back(static_cast<int>(t), k);
   Fronts out;
-  std::vector<double>& length = out.edgeLength;
-  length.assign(cut.edges.size(), kUnreached);
   out.onPath.resize(cut.edges.size());
   const Metric metric = Metric::uniform();
-  FastMarcher marcher(cut.mesh, metric);
-  for (int i = 0; i < nb; ++i) {
-    if (!progress.report(static_cast<double>(i) / nb, "Geodesic distances to the base vertices")) return cancelled();
-    FastMarchingParams limit;
-    for (const auto& [t, k] : star[i])
-      limit.targets.insert(limit.targets.end(), pieces[t].vertices.begin(), pieces[t].vertices.end());
-    marcher.reset();
-    if (Status s = marcher.addSource(base.baseVertex[i], 0); !s) return s;
-    if (Status s = marcher.propagate(limit); !s) return s;
-    const std::vector<double>& d = marcher.distance();
-    for (const auto& [t, k] : star[i]) {
-      Piece& p = pieces[t];
-      for (size_t l = 0; l < p.vertices.size(); ++l) p.distance[l][k] = d[p.vertices[l]];
-      for (int m = 1; m < 3; ++m) {  // the edges from i to the triangle's other corners
-        const int j = base.triangles[t][(k + m) % 3];
-        const int e = cut.triangleEdge[t][(k + 3 - m) % 3];
-        length[e] = std::min(length[e], d[base.baseVertex[j]]);
-        std::vector<double>& along = out.onPath[e][cut.edges[e].first == i ? 0 : 1];
-        if (along.empty())
-          for (int v : cut.path[e]) along.push_back(d[v]);
+  // The base vertices in two halves, the second on a helper thread with its own engine. A front
+  // writes only its own corner's distances and its own end's side of each base edge; the edge
+  // lengths (read from both ends) are kept per half and merged. 1.66M vertices, 5,000 base
+  // vertices: 3.6 s on one thread.
+  std::array<std::vector<double>, 2> length;
+  std::array<Status, 2> failed;
+  std::atomic<bool> stop{false};
+  onTwoThreads([&](bool helper) {
+    std::vector<double>& mine = length[helper];
+    mine.assign(cut.edges.size(), kUnreached);
+    FastMarcher marcher(cut.mesh, metric);
+    for (int i = helper ? nb / 2 : 0, last = helper ? nb : nb / 2; i < last && !stop; ++i) {
+      if (!helper && !progress.report(static_cast<double>(i) / last, "Geodesic distances to the base vertices"))
+        stop = true;
+      FastMarchingParams limit;
+      for (const auto& [t, k] : star[i])
+        limit.targets.insert(limit.targets.end(), pieces[t].vertices.begin(), pieces[t].vertices.end());
+      marcher.reset();
+      Status s = marcher.addSource(base.baseVertex[i], 0);
+      if (s) s = marcher.propagate(limit);
+      if (!s) {
+        failed[helper] = s;
+        stop = true;
+        break;
+      }
+      const std::vector<double>& d = marcher.distance();
+      for (const auto& [t, k] : star[i]) {
+        Piece& p = pieces[t];
+        for (size_t l = 0; l < p.vertices.size(); ++l) p.distance[l][k] = d[p.vertices[l]];
+        for (int m = 1; m < 3; ++m) {  // the edges from i to the triangle's other corners
+          const int j = base.triangles[t][(k + m) % 3];
+          const int e = cut.triangleEdge[t][(k + 3 - m) % 3];
+          mine[e] = std::min(mine[e], d[base.baseVertex[j]]);
+          std::vector<double>& along = out.onPath[e][cut.edges[e].first == i ? 0 : 1];
+          if (along.empty())
+            for (int v : cut.path[e]) along.push_back(d[v]);
+        }
       }
     }
-  }
+  });
+  for (const Status& s : failed)
+    if (!s) return s;
+  if (stop) return cancelled();
+  out.edgeLength.resize(cut.edges.size());
+  for (size_t e = 0; e < cut.edges.size(); ++e) out.edgeLength[e] = std::min(length[0][e], length[1][e]);
   return out;
 }
 

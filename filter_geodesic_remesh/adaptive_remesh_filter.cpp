@@ -117,6 +117,7 @@ void declareAdaptiveRemesh(const MeshModel& mesh, RichParameterList& params) {
                               "with 5 rounds: none under 30 degrees) at some cost in surface error on CAD parts "
                               "(default " +
                               QString::number(adaptiveDefaults.remesh.relaxation.iterations) + ")."));
+  declareReportError(params);
 }
 
 Status applyAdaptiveRemesh(MeshDocument& doc, const RichParameterList& params, FilterContext& ctx) {
@@ -126,6 +127,7 @@ Status applyAdaptiveRemesh(MeshDocument& doc, const RichParameterList& params, F
   adaptive.remesh.sampling = readSampling(params);
   adaptive.remesh.centroidalIterations = params.getInt(param::kCentroidalIterations);
   adaptive.remesh.relaxation.iterations = params.getInt(param::kRelaxation);
+  adaptive.remesh.measureDistance = readReportError(params);
   adaptive.gradation = params.getFloat(param::kGradation);
   adaptive.metric.field = static_cast<AdaptiveField>(params.getEnum(param::kField));
   adaptive.metric.speed.mapping = static_cast<SpeedMapping>(params.getEnum(param::kMapping));

@@ -13,7 +13,8 @@ constexpr const char *kTargetVertices = "TargetVertices", *kSpacing = "Spacing",
                      *kSubVertexPlacement = "SubVertexPlacement", *kCentroidalIterations = "CentroidalIterations";
 
 // Remeshing: Geodesic Uniform
-constexpr const char *kRefinement = "Refinement", *kRelaxation = "Relaxation", *kLabelInput = "LabelInput";
+constexpr const char *kRefinement = "Refinement", *kRelaxation = "Relaxation", *kLabelInput = "LabelInput",
+                     *kReportError = "ReportError";
 
 // Remeshing: Geodesic Adaptive; CurvatureRadius also in Compute Total Curvature
 constexpr const char *kField = "Field", *kMapping = "Mapping", *kStrength = "Strength",

@@ -135,6 +135,7 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
   ctx.log("Angles: standard deviation " + formatNumber(m.angles.stdDegrees, "%.1f") + " deg, smallest " +
           formatNumber(m.angles.minDegrees, "%.1f") + " deg, " + formatNumber(100 * m.angles.shareMinBelow30, "%.2f") +
           " % of triangles with an angle under 30 deg");
+  if (!m.distances) return;  // ReportError off
   const double rms = std::sqrt(0.5 * (m.toInput.rms * m.toInput.rms + m.fromInput.rms * m.fromInput.rms));
   const double diag = m.inputDiagonal;
   ctx.log("Hausdorff distance to the input (one-sided): " + formatNumber(100 * m.toInput.max / diag, "%.3f") +
@@ -178,6 +179,18 @@ void declareSampling(const MeshModel& mesh, RichParameterList& params, const Sur
                   "at 3,800 samples on a 38k-vertex mesh (default " +
                   QString::number(defaults.centroidalIterations) + ")."));
 }
+
+void declareReportError(RichParameterList& params) {
+  const bool defaultValue = SurfaceRemeshParams{}.measureDistance;
+  params.addParam(RichBool(param::kReportError, defaultValue, "Report error",
+                           "Also measure the distance between the new mesh and the input both ways and write it to "
+                           "the log (Hausdorff and RMS, in % of the bounding-box diagonal): exact at its samples, "
+                           "about a tenth more time (bunny00 at 10%: 15 ms of 150). MeshLab's 'Hausdorff Distance' "
+                           "filter measures it too (default " +
+                               QString(defaultValue ? "true" : "false") + ")."));
+}
+
+bool readReportError(const RichParameterList& params) { return params.getBool(param::kReportError); }
 
 FpsParams readSampling(const RichParameterList& params) {
   FpsParams fps;

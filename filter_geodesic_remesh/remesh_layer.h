@@ -18,6 +18,10 @@ namespace gr::filters {
 void declareSampling(const MeshModel& mesh, RichParameterList& params, const SurfaceRemeshParams& defaults);
 /// Reads them (the core checks them): Spacing is used only when TargetVertices is 0.
 FpsParams readSampling(const RichParameterList& params);
+/// ReportError, last of both remeshing filters' parameters: the log's distance to the input
+/// (SurfaceRemeshParams::measureDistance), off by default.
+void declareReportError(RichParameterList& params);
+bool readReportError(const RichParameterList& params);
 
 /// How a remesh is committed.
 struct RemeshCommit {

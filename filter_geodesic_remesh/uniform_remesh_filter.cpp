@@ -30,6 +30,7 @@ void declareUniformRemesh(const MeshModel& mesh, RichParameterList& params) {
   params.addParam(RichBool(param::kLabelInput, false, "Label input",
                            "Also write into the input mesh each vertex's Voronoi cell (the output vertex it belongs "
                            "to) as vertex quality, and color it by cell (default false: the input is not changed)."));
+  declareReportError(params);
 }
 
 Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, FilterContext& ctx) {
@@ -41,6 +42,7 @@ Status applyUniformRemesh(MeshDocument& doc, const RichParameterList& params, Fi
   remesh.centroidalIterations = params.getInt(param::kCentroidalIterations);
   remesh.refinement = params.getInt(param::kRefinement);
   remesh.relaxation.iterations = params.getInt(param::kRelaxation);
+  remesh.measureDistance = readReportError(params);
   Expected<SurfaceRemeshResult> result = remeshSurface(current->view.mesh, remesh, ctx.progress);
   if (!result) return result.status();
   commit.title = "Geodesic uniform remeshing";

@@ -401,12 +401,14 @@ Expected<SampledDual> sampleToCount(FastMarcher& marcher, const FrontSurface& fr
 
 /// Angles of the output and its distance to the input both ways (remesh_distance.h: the remesh's
 /// cells and origins find each sample's nearest point without a grid over the input).
-Status measureOutput(const TriMesh& input, SurfaceRemeshResult& r, Progress progress) {
+Status measureOutput(const TriMesh& input, bool distances, SurfaceRemeshResult& r, Progress progress) {
   r.measures.angles = angleStatistics(r.mesh);
+  if (!distances) return Status::ok();
   const RemeshDistances d = remeshDistances(input, r.mesh, r.cell, r.origin, r.collapsedVertices == 0);
   r.measures.toInput = d.toInput;
   r.measures.fromInput = d.fromInput;
   r.measures.inputDiagonal = input.boundingBoxDiagonal();
+  r.measures.distances = true;
   if (!progress.report(1.0, "Surface distance")) return cancelled();
   return Status::ok();
 }
@@ -686,7 +688,7 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   if (Status s = keepInputIfSmaller(input, *r); !s) return s;
   auto clock = std::chrono::steady_clock::now();
   if (params.measure)
-    if (Status s = measureOutput(input, *r, progress.sub(remeshShare, 1.0)); !s) return s;
+    if (Status s = measureOutput(input, params.measureDistance, *r, progress.sub(remeshShare, 1.0)); !s) return s;
   r->times.measure = lap(clock);
   return r;
 }

@@ -16,7 +16,7 @@
 //            the count asked for kept)
 //         --relaxOnSurface---------> same mesh, better angles (on the input when refined)
 //         --map back---------------> each output vertex's origin on the input (flips undone)
-//         --measure (optional)-----> angles, surface distance both ways
+//         --measure (optional)-----> angles; the surface distance both ways if asked (measureDistance)
 //
 // On a refined surface the fronts use the intrinsic lengths, saddle seeding and the chord bound
 // (GeodesicSurface::makeMarcher); `refinement` (midpoint subdivision) is not applied on top (the
@@ -103,9 +103,13 @@ struct SurfaceRemeshParams {
   /// (RelaxationParams::regularised: valence flips, moves up to 0.1 of the ring off the surface).
   int centroidalIterations = 0;
   static constexpr int kMaxCentroidalIterations = 50;  ///< largest centroidalIterations
-  /// Also measure the output: angle statistics and the surface distance to the input both ways
-  /// (the figures of the filters' log).
+  /// Also measure the output: angle statistics and (measureDistance) the surface distance to the
+  /// input both ways (the figures of the filters' log).
   bool measure = true;
+  /// With `measure`, the surface distances too (remesh_distance.h): the dear part (bunny00 at
+  /// 10%: about 15 ms of a 140 ms filter run against under 1 ms for the angles), so off unless
+  /// asked for (the filters' ReportError).
+  bool measureDistance = false;
 };
 
 /// How good the output is, measured against the input (SurfaceRemeshParams::measure).
@@ -114,6 +118,7 @@ struct RemeshMeasures {
   SurfaceDistance toInput;     ///< from the output's surface to the input's
   SurfaceDistance fromInput;   ///< from the input's surface to the output's
   double inputDiagonal = 0.0;  ///< the input's bounding-box diagonal, the figures' unit in the log
+  bool distances = false;      ///< toInput and fromInput were measured (measureDistance)
 };
 
 /// Wall time of each stage, in seconds (the benchmarks report them; the sum is about the whole call).

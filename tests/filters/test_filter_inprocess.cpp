@@ -559,6 +559,8 @@ TEST_F(FilterInProcess, DeclaredDefaultsAreTheCoreParamsDefaults) {
     const bool isAdaptive = std::string(name) == "Remeshing: Geodesic Adaptive";
     EXPECT_EQ(params.getInt(filters::param::kCentroidalIterations),
               isAdaptive ? adaptive.remesh.centroidalIterations : remesh.centroidalIterations);
+    EXPECT_EQ(params.getBool(filters::param::kReportError),
+              isAdaptive ? adaptive.remesh.measureDistance : remesh.measureDistance);
   }
   use("Remeshing: Geodesic Uniform");
   declare(*mm);
@@ -608,7 +610,25 @@ TEST_F(FilterInProcess, UniformRemeshMakesANewLayerAndKeepsTheInput) {
   EXPECT_TRUE(out->hasDataMask(MeshModel::MM_VERTCOLOR));
   EXPECT_EQ(out->cm.vert[0].C(), vcg::Color4b(200, 10, 10, 255));
   EXPECT_NE(logText().find("added to make the triangulation valid"), std::string::npos) << logText();
-  EXPECT_NE(logText().find("Hausdorff distance"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("Angles: "), std::string::npos) << logText();
+  // The distance to the input only when asked for (ReportError), and then the core's figure.
+  EXPECT_EQ(logText().find("Hausdorff distance"), std::string::npos) << logText();
+  log.Clear();
+  doc.setCurrent(mm);
+  params.setValue(filters::param::kReportError, BoolValue(true));
+  ASSERT_TRUE(apply()) << logText();
+  const Expected<adapters::CoreView> asRead = adapters::toCore(mm->cm);  // the input as the filter reads it
+  ASSERT_TRUE(asRead);
+  SurfaceRemeshParams core;
+  core.sampling.targetCount = 400;
+  core.measureDistance = true;
+  const Expected<SurfaceRemeshResult> measured = remeshSurface(asRead->mesh, core);
+  ASSERT_TRUE(measured) << measured.status().message;
+  const RemeshMeasures& m = measured->measures;
+  char expected[64];
+  std::snprintf(expected, sizeof expected, "two-sided %.3f %%",
+                100 * std::max(m.toInput.max, m.fromInput.max) / m.inputDiagonal);
+  EXPECT_NE(logText().find(expected), std::string::npos) << expected << " in " << logText();
 }
 
 // The log says whether output faces cross (issue 20: the log said "Topology kept" and nothing

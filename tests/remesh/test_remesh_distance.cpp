@@ -58,6 +58,7 @@ TEST(RemeshDistance, RemeshSurfaceMeasuresWithIt) {
   SurfaceRemeshParams params;
   params.sampling.targetCount = 323;
   params.measure = true;
+  params.measureDistance = true;
   const Expected<SurfaceRemeshResult> r = remeshSurface(input, params);
   ASSERT_TRUE(r) << r.status().message;
   const RemeshDistances d = remeshDistances(input, r->mesh, r->cell, r->origin, r->collapsedVertices == 0);
@@ -65,6 +66,16 @@ TEST(RemeshDistance, RemeshSurfaceMeasuresWithIt) {
   EXPECT_EQ(r->measures.fromInput.max, d.fromInput.max);
   EXPECT_EQ(r->measures.fromInput.rms, d.fromInput.rms);
   EXPECT_DOUBLE_EQ(r->measures.inputDiagonal, input.boundingBoxDiagonal());
+  EXPECT_TRUE(r->measures.distances);
+  // Off by default (the filters' ReportError): the angles only, the same remesh.
+  params.measureDistance = SurfaceRemeshParams{}.measureDistance;
+  ASSERT_FALSE(params.measureDistance);
+  const Expected<SurfaceRemeshResult> angles = remeshSurface(input, params);
+  ASSERT_TRUE(angles) << angles.status().message;
+  EXPECT_FALSE(angles->measures.distances);
+  EXPECT_EQ(angles->measures.toInput.max, 0.0);
+  EXPECT_EQ(angles->measures.angles.minDegrees, r->measures.angles.minDegrees);
+  EXPECT_EQ(angles->mesh.triangles, r->mesh.triangles);
 }
 
 }  // namespace

@@ -327,26 +327,34 @@ void countTopology(TriMesh& m, const std::vector<std::array<int, 2>>& others) {
 
 }  // namespace
 
-Expected<TriMesh> buildTriMesh(std::vector<Vec3> positions, std::vector<Tri> triangles) {
+namespace {
+
+/// The checks, the vertex -> corner lists and the opposite corners; `others` receives the
+/// star neighbours (starNeighbours), which the topology counts read too.
+Expected<TriMesh> withAdjacency(std::vector<Vec3> positions, std::vector<Tri> triangles,
+                                std::vector<std::array<int, 2>>& others) {
   if (Status s = validate(positions, triangles); !s) return s;
   TriMesh m;
   m.positions = std::move(positions);
   m.triangles = std::move(triangles);
   rebuildVertexCorners(m);
-  const std::vector<std::array<int, 2>> others = starNeighbours(m);
+  others = starNeighbours(m);
   buildOppositeCorners(m, others);
-  countTopology(m, others);
+  return m;
+}
+
+}  // namespace
+
+Expected<TriMesh> buildTriMesh(std::vector<Vec3> positions, std::vector<Tri> triangles) {
+  std::vector<std::array<int, 2>> others;
+  Expected<TriMesh> m = withAdjacency(std::move(positions), std::move(triangles), others);
+  if (m) countTopology(*m, others);
   return m;
 }
 
 Expected<TriMesh> buildAdjacency(std::vector<Vec3> positions, std::vector<Tri> triangles) {
-  if (Status s = validate(positions, triangles); !s) return s;
-  TriMesh m;
-  m.positions = std::move(positions);
-  m.triangles = std::move(triangles);
-  rebuildVertexCorners(m);
-  buildOppositeCorners(m, starNeighbours(m));
-  return m;
+  std::vector<std::array<int, 2>> others;
+  return withAdjacency(std::move(positions), std::move(triangles), others);
 }
 
 void countTopology(TriMesh& mesh) { countTopology(mesh, starNeighbours(mesh)); }

@@ -224,6 +224,28 @@ int cornersOfFirstFan(const TriMesh& m, int v) {
   return reached;
 }
 
+/// Whether v's corners form one closed fan of consistently oriented faces, read from its star
+/// neighbours alone (contiguous, no walk over the faces): every corner's next vertex differs from
+/// the others' next vertices, likewise its previous vertex, and following each corner's previous
+/// vertex to the corner whose next vertex it is visits all of them in one cycle. Then every edge
+/// at v has exactly two faces, so v has one fan. False leaves the question to the walk
+/// (boundaries, orientation flips, non-manifold configurations).
+bool oneOrientedCycle(const std::vector<std::array<int, 2>>& others, int begin, int n) {
+  const std::array<int, 2>* star = others.data() + begin;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      if (star[i][0] == star[j][0] || star[i][1] == star[j][1]) return false;
+  int at = 0;
+  for (int steps = 1; steps < n; ++steps) {
+    int next = -1;
+    for (int j = 0; j < n && next < 0; ++j)
+      if (star[j][0] == star[at][1]) next = j;
+    if (next <= 0) return false;  // no such corner (an open fan), or the cycle closed early
+    at = next;
+  }
+  return star[at][1] == star[0][0];
+}
+
 /// Isolated vertices, and non-manifold ones: a vertex with more than one fan of faces.
 void countNonManifoldVertices(const TriMesh& m, const std::vector<std::array<int, 2>>& others, Topology& t) {
   std::array<Topology, 2> halves;  // the two halves' counts, merged in vertex order
@@ -235,6 +257,7 @@ void countNonManifoldVertices(const TriMesh& m, const std::vector<std::array<int
         ++h.isolatedVertices;
         continue;
       }
+      if (oneOrientedCycle(others, m.vertexCornerBegin[v], m.valence(v))) continue;  // the common case
       if (cornersOfFirstFan(m, v) != m.valence(v) && countFans(m, others, v, scratch) > 1) {
         ++h.nonManifoldVertices;
         h.nonManifoldVertexList.push_back(v);

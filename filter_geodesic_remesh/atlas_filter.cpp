@@ -59,9 +59,13 @@ void declareTextureAtlas(const MeshModel& /*mesh*/, RichParameterList& params) {
                           "Geodesic Lloyd iterations of the segmentation (default " +
                               QString::number(d.segmentation.lloyd.iterations) + ")."));
   params.addParam(RichFloat(param::kFeatureAlignment, float(d.segmentation.featureAlignment), "Feature alignment",
-                            "Strength of the edge-attractive speed: chart boundaries follow sharp edges. 0 = off "
+                            "Strength of the edge-attractive speed: chart boundaries follow curved bands. 0 = off "
                             "(default " +
                                 QString::number(d.segmentation.featureAlignment) + ")."));
+  params.addParam(RichFloat(param::kSharpEdgeAngle, float(d.segmentation.sharpEdgeAngle), "Sharp edge angle",
+                            "Charts do not cross edges whose faces' normals differ by more than this (degrees): seams "
+                            "lie on them. 0 = off (default " +
+                                QString::number(d.segmentation.sharpEdgeAngle) + ")."));
   params.addParam(RichInt(param::kBasePoints, d.flattening.basePoints, "Base points",
                           "B: farthest-point base points of each chart's geodesic LLE, at most: a chart of V "
                           "vertices gets at most V/5 and at most max(25, V/50), its ARAP relaxation doing the rest "
@@ -88,6 +92,7 @@ Status applyTextureAtlas(MeshDocument& doc, const RichParameterList& params, Fil
   p.segmentation.regions = params.getInt(param::kRegions);
   p.segmentation.lloyd.iterations = params.getInt(param::kIterations);
   p.segmentation.featureAlignment = params.getFloat(param::kFeatureAlignment);
+  p.segmentation.sharpEdgeAngle = params.getFloat(param::kSharpEdgeAngle);
   p.segmentation.seed = static_cast<unsigned>(params.getInt(param::kSeed));
   p.flattening.basePoints = params.getInt(param::kBasePoints);
   p.flattening.neighbours = params.getInt(param::kNeighbours);

@@ -22,9 +22,10 @@ constexpr const char *kField = "Field", *kMapping = "Mapping", *kStrength = "Str
 
 // Segmentation: Geodesic Centroidal Tessellation (also Seed and UseQualityAsSpeed above)
 constexpr const char *kRegions = "Regions", *kIterations = "Iterations", *kFeatureAlignment = "FeatureAlignment",
-                     *kSplitIntoLayers = "SplitIntoLayers";
+                     *kSharpEdgeAngle = "SharpEdgeAngle", *kSplitIntoLayers = "SplitIntoLayers";
 
-// Parametrization: Geodesic Texture Atlas (also Regions, Iterations, FeatureAlignment, Seed) and
+// Parametrization: Geodesic Texture Atlas (also Regions, Iterations, FeatureAlignment, SharpEdgeAngle,
+// Seed) and
 // Parametrization: Geodesic LLE Flattening
 constexpr const char *kBasePoints = "BasePoints", *kNeighbours = "Neighbours", *kTextureSize = "TextureSize",
                      *kGutter = "Gutter", *kBoundary = "Boundary", *kFlatLayer = "FlatLayer";

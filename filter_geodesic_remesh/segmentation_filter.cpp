@@ -70,6 +70,10 @@ void logSegmentation(const SegmentationResult& r, const SegmentationParams& p, b
             ": region boundaries drawn to where it is large");
   else
     ctx.log("FeatureAlignment 0: plain geodesic distance");
+  if (r.sharpEdges > 0)
+    ctx.log("Fronts stopped at " + std::to_string(r.sharpEdges) + " sharp edges (normals more than " +
+            formatNumber(p.sharpEdgeAngle) + " degrees apart): the surface in " + std::to_string(r.surfacePieces) +
+            (r.surfacePieces == 1 ? " piece" : " pieces, seeds shared by area"));
   if (!r.speedFallback.empty()) ctx.warn(r.speedFallback);
   if (r.refined)
     ctx.log("Fronts ran on the intrinsic Delaunay refinement of the input (" + std::to_string(r.insertedPoints) +
@@ -103,9 +107,14 @@ void declareSegmentation(const MeshModel& /*mesh*/, RichParameterList& params) {
                               QString::number(d.lloyd.iterations) + ")."));
   params.addParam(RichFloat(param::kFeatureAlignment, float(d.featureAlignment), "Feature alignment",
                             "Strength mu of the edge-attractive speed F = 1/(1 + mu q/s) (paper's F2), q the total "
-                            "curvature (or the vertex quality) and s its 95th percentile: fronts slow down on sharp "
-                            "edges, so region boundaries follow them. Dimensionless; 0 = off (default " +
+                            "curvature (or the vertex quality) and s its 95th percentile: fronts slow down where q is "
+                            "large, so region boundaries follow curved bands. Dimensionless; 0 = off; large values "
+                            "make regions uneven (default " +
                                 QString::number(d.featureAlignment) + ")."));
+  params.addParam(RichFloat(param::kSharpEdgeAngle, float(d.sharpEdgeAngle), "Sharp edge angle",
+                            "Fronts stop at edges whose two faces' normals differ by more than this (degrees): region "
+                            "boundaries lie on such edges and no region crosses one. 0 = off (default " +
+                                QString::number(d.sharpEdgeAngle) + ")."));
   params.addParam(RichBool(param::kUseQualityAsSpeed, false, "Use quality as speed field",
                            "Use the vertex quality (any filter's output, e.g. a texture intensity) as the field q "
                            "instead of the total curvature (paper Fig. 11)."));
@@ -124,6 +133,7 @@ Status applySegmentation(MeshDocument& doc, const RichParameterList& params, Fil
   p.regions = params.getInt(param::kRegions);
   p.lloyd.iterations = params.getInt(param::kIterations);
   p.featureAlignment = params.getFloat(param::kFeatureAlignment);
+  p.sharpEdgeAngle = params.getFloat(param::kSharpEdgeAngle);
   p.seed = static_cast<unsigned>(params.getInt(param::kSeed));
   std::vector<double> values;
   if (params.getBool(param::kUseQualityAsSpeed)) {

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/geodesic/farthest_point_sampling.h"
+#include "core/mesh/sharp_cut.h"
 
 namespace gr {
 namespace {
@@ -142,9 +143,40 @@ int mergeStrayPieces(const TriMesh& mesh, std::vector<int>& faceRegion, int regi
       break;
     }
   }
+  // Faces no front reached (a piece of the cut surface or a component of the input with no seed):
+  // one face of each edge-connected piece of them.
+  std::vector<int> unlabelled(faceRegion.size());
+  for (int f = 0; f < mesh.faceCount(); ++f) unlabelled[f] = faceRegion[f] < 0 ? 0 : -1;
+  int pieces = 0;
+  const std::vector<int> piece = piecesOf(mesh, unlabelled, &pieces);
+  std::vector<char> listed(pieces, 0);
   for (int f = 0; f < mesh.faceCount(); ++f)
-    if (faceRegion[f] < 0) isolated->push_back(f);
+    if (faceRegion[f] < 0 && !listed[piece[f]]) {
+      listed[piece[f]] = 1;
+      isolated->push_back(f);
+    }
   return moved;
+}
+
+/// Gives the faces no front reached (the pieces of a cut surface that got no seed) to the labelled
+/// regions around them, nearest first (a breadth-first search over the input's faces). Returns
+/// the faces given.
+int fillUnlabelled(const TriMesh& mesh, std::vector<int>& faceRegion) {
+  std::vector<int> queue;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+    if (faceRegion[f] >= 0) queue.push_back(f);
+  int given = 0;
+  for (size_t head = 0; head < queue.size(); ++head) {
+    const int f = queue[head];
+    for (int c = 3 * f; c < 3 * f + 3; ++c) {
+      const int o = mesh.oppositeCorner[c];
+      if (o < 0 || faceRegion[TriMesh::face(o)] >= 0) continue;
+      faceRegion[TriMesh::face(o)] = faceRegion[f];
+      queue.push_back(TriMesh::face(o));
+      ++given;
+    }
+  }
+  return given;
 }
 
 Status checkSegmentationInput(const TriMesh& mesh, const std::vector<double>& values, const SegmentationParams& p) {
@@ -161,6 +193,8 @@ Status checkSegmentationInput(const TriMesh& mesh, const std::vector<double>& va
     return invalidInput("segmentation: Iterations must be >= 0");
   if (!std::isfinite(p.featureAlignment) || p.featureAlignment < 0.0)
     return invalidInput("segmentation: the feature alignment must be finite and >= 0");
+  if (!(p.sharpEdgeAngle >= 0.0 && p.sharpEdgeAngle <= 180.0))
+    return invalidInput("segmentation: the sharp edge angle must be between 0 and 180 degrees");
   if (p.featureAlignment > 0.0 && p.speedField == AdaptiveField::VertexQuality &&
       static_cast<int>(values.size()) != mesh.vertexCount())
     return invalidInput("segmentation: the speed field needs one value per vertex");
@@ -186,15 +220,18 @@ Expected<Metric> segmentationMetric(const TriMesh& mesh, const std::vector<doubl
 /// Seeds to add after a labelling: one per region that is not a disk (at its vertex farthest from
 /// the seeds) and one per isolated piece; the seeds of empty regions re-placed. Returns the seeds
 /// added; *nonDisk receives the regions that are not disks.
-int seedsForNonDisks(const TriMesh& mesh, const std::vector<int>& faceRegion, const std::vector<double>& distance,
-                     const std::vector<int>& isolated, std::vector<SurfacePoint>& seeds, int* nonDisk, int* replaced) {
+/// Regions are counted on `mesh`, seeds placed on the fronts' surface `fronts` (the same faces;
+/// `distance` per vertex of `fronts`).
+int seedsForNonDisks(const TriMesh& mesh, const TriMesh& fronts, const std::vector<int>& faceRegion,
+                     const std::vector<double>& distance, const std::vector<int>& isolated,
+                     std::vector<SurfacePoint>& seeds, int* nonDisk, int* replaced) {
   const int regions = static_cast<int>(seeds.size());
   const std::vector<RegionTopology> topo = regionTopology(mesh, faceRegion, regions);
   std::vector<int> farthest(regions, -1);
   for (int f = 0; f < mesh.faceCount(); ++f) {
     const int r = faceRegion[f];
     if (r < 0) continue;
-    for (int v : mesh.triangles[f])
+    for (int v : fronts.triangles[f])
       if (farthest[r] < 0 || distance[v] > distance[farthest[r]]) farthest[r] = v;
   }
   int added = 0;
@@ -220,10 +257,100 @@ int seedsForNonDisks(const TriMesh& mesh, const std::vector<int>& faceRegion, co
     }
   }
   for (int f : isolated) {
-    seeds.push_back(SurfacePoint::atVertex(mesh.triangles[f][0]));
+    seeds.push_back(SurfacePoint::atVertex(fronts.triangles[f][0]));
     ++added;
   }
   return added;
+}
+
+/// Seeds per connected piece of the fronts' surface (a piece's fronts never leave it, so Lloyd
+/// keeps its count): one for each of the `seeds` heaviest pieces, then each further seed where it
+/// lowers the centroidal energy most. Cells of even size in a piece of mass M cost about
+/// c M^2 / n for n cells, so the next seed goes to the piece with the largest M^2 / (n (n + 1)),
+/// at most `available[k]` in piece k. With one piece: all the seeds.
+std::vector<int> seedsPerPiece(const std::vector<double>& mass, const std::vector<int>& available, int seeds) {
+  const int pieces = static_cast<int>(mass.size());
+  std::vector<int> order(pieces), count(pieces, 0);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return mass[a] > mass[b]; });
+  int given = 0;
+  for (int k : order)
+    if (given < seeds && available[k] > 0) {
+      count[k] = 1;
+      ++given;
+    }
+  for (; given < seeds; ++given) {
+    int best = -1;
+    double gain = -1.0;
+    for (int k = 0; k < pieces; ++k) {
+      if (count[k] == 0 || count[k] >= available[k]) continue;
+      const double g = mass[k] * mass[k] / (double(count[k]) * (count[k] + 1));
+      if (g > gain) {
+        gain = g;
+        best = k;
+      }
+    }
+    if (best < 0) break;
+    ++count[best];
+  }
+  return count;
+}
+
+/// The first seeds: a farthest-point sampling of the fronts' surface and, where that surface is
+/// in several pieces, of each piece its share (seedsPerPiece). Greedy sampling chosen over the
+/// whole surface, read piece by piece, is each piece's own greedy sampling, so a longer sampling
+/// gives every piece its first samples; it is made longer (doubled) until each piece has its
+/// share. *holdsField: the engine holds the field of exactly the seeds returned.
+Expected<std::vector<SurfacePoint>> initialSeeds(FastMarcher& marcher, const std::vector<double>& mass,
+                                                 const SegmentationParams& params, bool* holdsField,
+                                                 Progress progress) {
+  const TriMesh& mesh = marcher.mesh();
+  const Topology& topo = mesh.topology;
+  FpsParams fps;
+  fps.targetCount = params.regions;
+  fps.seed = params.seed;
+  fps.boundaryPriority = 1.0;  // seeds are cell centres, not outline samples
+  fps.initialSamples = farthestPointsIn3d(mesh, std::min(kSeedsIn3d, params.regions / kSeedsPerSeedIn3d), params.seed);
+  std::vector<double> pieceMass(std::max(topo.components, 1), 0.0);
+  std::vector<int> available(pieceMass.size(), 0);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    if (topo.componentOfVertex[v] >= 0) {
+      pieceMass[topo.componentOfVertex[v]] += mass[v];
+      ++available[topo.componentOfVertex[v]];
+    }
+  const std::vector<int> share = seedsPerPiece(pieceMass, available, params.regions);
+  const int inFaces = mesh.vertexCount() - topo.isolatedVertices;
+  for (;;) {
+    Expected<FpsResult> sampled = farthestPointSampling(marcher, fps, progress);
+    if (!sampled) return sampled.status();
+    std::vector<int> taken(share.size(), 0);
+    std::vector<SurfacePoint> seeds;
+    for (size_t i = 0; i < sampled->samples.size(); ++i) {
+      const int k = topo.componentOfVertex[sampled->samples[i]];
+      if (taken[k] < share[k]) {
+        ++taken[k];
+        seeds.push_back(sampled->origin[i]);
+      }
+    }
+    if (taken == share || fps.targetCount >= inFaces) {
+      *holdsField = seeds.size() == sampled->samples.size();
+      return seeds;
+    }
+    fps.targetCount = std::min(2 * fps.targetCount, inFaces);
+  }
+}
+
+/// The surface the fronts run on: `mesh` cut open along its sharp edges (sharpEdgeAngle > 0 and
+/// some edge that sharp), else `mesh` itself (`cut` left empty).
+Expected<const TriMesh*> frontSurface(const TriMesh& mesh, const SegmentationParams& p, CutSurface* cut,
+                                      SegmentationResult* out) {
+  if (p.sharpEdgeAngle <= 0.0) return &mesh;
+  Expected<CutSurface> c = cutAlongEdges(mesh, sharpEdgeCorners(mesh, p.sharpEdgeAngle));
+  if (!c) return c.status();
+  out->sharpEdges = c->sharpEdges;
+  if (c->sharpEdges == 0) return &mesh;
+  *cut = std::move(*c);
+  return &cut->mesh;
 }
 
 }  // namespace
@@ -325,28 +452,32 @@ Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vect
   if (Status s = checkSegmentationInput(mesh, values, params); !s) return s;
   SegmentationResult out;
   out.regionsAsked = params.regions;
-  Expected<Metric> metric = segmentationMetric(mesh, values, params, &out, progress.sub(0.0, 0.05));
+  CutSurface cut;
+  Expected<const TriMesh*> cutOrInput = frontSurface(mesh, params, &cut, &out);
+  if (!cutOrInput) return cutOrInput.status();
+  const TriMesh& work = **cutOrInput;  // the input, or the input cut open at its sharp edges
+  out.surfacePieces = work.topology.components;
+  std::vector<double> workValues;  // the field on the cut surface's vertices, from their origins
+  if (!cut.origin.empty() && params.speedField == AdaptiveField::VertexQuality && !values.empty())
+    for (int v : cut.origin) workValues.push_back(values[v]);
+  Expected<Metric> metric =
+      segmentationMetric(work, cut.origin.empty() ? values : workValues, params, &out, progress.sub(0.0, 0.05));
   if (!metric) return metric.status();
-  Expected<GeodesicSurface> surface = prepareGeodesicSurface(mesh, *metric, params.surface, progress.sub(0.05, 0.1));
+  Expected<GeodesicSurface> surface = prepareGeodesicSurface(work, *metric, params.surface, progress.sub(0.05, 0.1));
   if (!surface) return surface.status();
   out.refined = surface->refined;
   out.insertedPoints = surface->insertedPoints();
   FastMarcher marcher = surface->makeMarcher();
-  FpsParams fps;
-  fps.targetCount = params.regions;
-  fps.seed = params.seed;
-  fps.boundaryPriority = 1.0;  // seeds are cell centres, not outline samples
-  fps.initialSamples =
-      farthestPointsIn3d(marcher.mesh(), std::min(kSeedsIn3d, params.regions / kSeedsPerSeedIn3d), params.seed);
-  Expected<FpsResult> sampled = farthestPointSampling(marcher, fps, progress.sub(0.1, 0.15));
-  if (!sampled) return sampled.status();
-  std::vector<SurfacePoint> seeds = sampled->origin;
   LloydParams lloyd = params.lloyd;
+  Expected<std::vector<SurfacePoint>> first =
+      initialSeeds(marcher, lloydVertexMass(surface->mesh(), surface->metric, lloyd.metricArea), params,
+                   &lloyd.marcherHoldsSeedsField, progress.sub(0.1, 0.15));
+  if (!first) return first.status();
+  std::vector<SurfacePoint> seeds = std::move(*first);
   // A seed on a vertex (U = 0 there) owns every face around it in the labelling: no region is
   // left without a face.
   lloyd.vertexSeeds = true;
-  lloyd.marcherHoldsSeedsField = true;  // the sampling's
-  std::vector<int> cell;                // of the input's vertices, in the last round
+  std::vector<int> cell;  // of the fronts' vertices, in the last round
   for (int round = 0;; ++round) {
     Expected<LloydResult> relaxed = geodesicLloyd(
         surface->mesh(), surface->metric, marcher, seeds, lloyd,
@@ -357,14 +488,16 @@ Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vect
     out.iterations += relaxed->iterations;
     out.reseeded += relaxed->reseeded;
     seeds = relaxed->seeds;
-    // The input's vertices are the surface's first ones: their cells label the input's faces.
-    cell.assign(relaxed->cell.begin(), relaxed->cell.begin() + mesh.vertexCount());
-    const std::vector<double> distance(relaxed->distance.begin(), relaxed->distance.begin() + mesh.vertexCount());
-    out.faceRegion = labelFaces(mesh, cell, distance);
+    // The fronts' surface's first vertices are `work`'s: their cells label its faces, the input's.
+    cell.assign(relaxed->cell.begin(), relaxed->cell.begin() + work.vertexCount());
+    const std::vector<double> distance(relaxed->distance.begin(), relaxed->distance.begin() + work.vertexCount());
+    out.faceRegion = labelFaces(work, cell, distance);
     std::vector<int> isolated;
+    out.strayFacesMoved += fillUnlabelled(mesh, out.faceRegion);
     out.strayFacesMoved += mergeStrayPieces(mesh, out.faceRegion, static_cast<int>(seeds.size()), &isolated);
     int replaced = 0;
-    const int added = seedsForNonDisks(mesh, out.faceRegion, distance, isolated, seeds, &out.nonDiskRegions, &replaced);
+    const int added =
+        seedsForNonDisks(mesh, work, out.faceRegion, distance, isolated, seeds, &out.nonDiskRegions, &replaced);
     out.reseeded += replaced;
     if (added == 0 && replaced == 0) break;
     if (round == params.maxDiskRounds || static_cast<int>(seeds.size()) > mesh.vertexCount())
@@ -377,6 +510,7 @@ Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vect
     lloyd.iterations = std::max(params.iterationsAfterAdding, 1);
   }
   out.regions = static_cast<int>(seeds.size());
+  cell.resize(mesh.vertexCount());  // a cut vertex's first copy keeps its number
   if (params.featureAlignment > 0.0 && params.snapToSharpEdges)
     out.snappedFaces = snapBoundariesToSharpEdges(mesh, cell, out.faceRegion, out.regions);
   out.seedPosition.resize(seeds.size());

@@ -1301,6 +1301,7 @@ TEST_F(FilterInProcess, TextureAtlasWritesTheCoresWedgeUvsAndATexture) {
   EXPECT_EQ(params.getInt(filters::param::kRegions), d.segmentation.regions);
   EXPECT_EQ(params.getInt(filters::param::kIterations), d.segmentation.lloyd.iterations);
   EXPECT_FLOAT_EQ(params.getFloat(filters::param::kFeatureAlignment), float(d.segmentation.featureAlignment));
+  EXPECT_FLOAT_EQ(params.getFloat(filters::param::kSharpEdgeAngle), float(d.segmentation.sharpEdgeAngle));
   EXPECT_EQ(params.getInt(filters::param::kBasePoints), d.flattening.basePoints);
   EXPECT_EQ(params.getInt(filters::param::kNeighbours), d.flattening.neighbours);
   EXPECT_EQ(params.getInt(filters::param::kTextureSize), d.textureSize);
@@ -1442,6 +1443,7 @@ TEST_F(FilterInProcess, SegmentationWritesDiskRegionsAsTheCoreDoes) {
   EXPECT_EQ(params.getInt(filters::param::kRegions), defaults.regions);
   EXPECT_EQ(params.getInt(filters::param::kIterations), defaults.lloyd.iterations);
   EXPECT_FLOAT_EQ(params.getFloat(filters::param::kFeatureAlignment), float(defaults.featureAlignment));
+  EXPECT_FLOAT_EQ(params.getFloat(filters::param::kSharpEdgeAngle), float(defaults.sharpEdgeAngle));
   EXPECT_EQ(params.getInt(filters::param::kSeed), int(defaults.seed));
   params.setValue(filters::param::kRegions, IntValue(20));
   params.setValue(filters::param::kSplitIntoLayers, BoolValue(true));
@@ -1479,6 +1481,8 @@ TEST_F(FilterInProcess, SegmentationWritesDiskRegionsAsTheCoreDoes) {
     if (layer != mm) layerFaces += layer->cm.fn;
   EXPECT_EQ(layerFaces, fandisk.faceCount());
   EXPECT_NE(logText().find("Time:"), std::string::npos);
+  EXPECT_NE(logText().find("Fronts stopped at " + std::to_string(core->sharpEdges) + " sharp edges"), std::string::npos)
+      << logText();
 }
 
 // CentroidalIterations on both remeshing filters: a valid remesh of the input's topology at the
@@ -1518,6 +1522,9 @@ TEST_F(FilterInProcess, SegmentationBadInputLeavesTheDocumentAlone) {
   params.setValue(filters::param::kFeatureAlignment, FloatValue(-1.0f));
   expectCleanFailure(*mm, StatusCode::InvalidInput, "feature alignment");
   params.setValue(filters::param::kFeatureAlignment, FloatValue(1.0f));
+  params.setValue(filters::param::kSharpEdgeAngle, FloatValue(200.0f));
+  expectCleanFailure(*mm, StatusCode::InvalidInput, "sharp edge angle");
+  params.setValue(filters::param::kSharpEdgeAngle, FloatValue(60.0f));
   params.setValue(filters::param::kUseQualityAsSpeed, BoolValue(true));
   expectCleanFailure(*mm, StatusCode::InvalidInput, "quality");
   // Zero speed from the quality: the quality is the field of an Attractive speed, so a negative

@@ -158,5 +158,44 @@ TEST(SharpCut, SegmentationSharesSeedsAmongPiecesByArea) {
   for (double a : area) EXPECT_NEAR(a, 1.0, 0.25);
 }
 
+// A speck: one vertex of a flat grid pulled up into a spike, its faces cut off by sharp edges.
+// Cut off, it would be a region of its own inside another (a ring around it), so below a quarter
+// of the mean region area it is left joined; above, it is a piece and gets its own region.
+TEST(SharpCut, SegmentationLeavesSpecksJoined) {
+  TriMesh grid = test::planeGrid(20);
+  int centre = 0;
+  for (int v = 0; v < grid.vertexCount(); ++v)
+    if ((grid.positions[v] - Vec3(0.5, 0.5, 0.0)).norm() < (grid.positions[centre] - Vec3(0.5, 0.5, 0.0)).norm())
+      centre = v;
+  grid.positions[centre].z() = 0.15;
+  const TriMesh spike = *buildTriMesh(grid.positions, grid.triangles);
+  const Expected<CutSurface> cut = cutAlongEdges(spike, sharpEdgeCorners(spike, 60.0));
+  ASSERT_TRUE(cut);
+  const int pieces = cut->mesh.topology.components;
+  ASSERT_GE(pieces, 2) << "the spike's faces are cut off the rest";
+  double speck = 0.0, total = 0.0;
+  for (int f = 0; f < spike.faceCount(); ++f) {
+    const double a = 0.5 * areaNormal(spike, f).norm();
+    total += a;
+    if (cut->mesh.topology.componentOfVertex[cut->mesh.triangles[f][0]] !=
+        cut->mesh.topology.componentOfVertex[cut->mesh.triangles[0][0]])
+      speck += a;
+  }
+  SegmentationParams p;
+  p.featureAlignment = 0.0;
+  p.regions = 4;
+  ASSERT_LT(speck, 0.25 * total / p.regions);
+  const Expected<SegmentationResult> few = segmentSurface(spike, {}, p);
+  ASSERT_TRUE(few) << few.status().message;
+  EXPECT_EQ(few->surfacePieces, 1);
+  EXPECT_EQ(few->regions, 4);
+  p.regions = 100;
+  ASSERT_GT(speck, 0.25 * total / p.regions);
+  const Expected<SegmentationResult> many = segmentSurface(spike, {}, p);
+  ASSERT_TRUE(many) << many.status().message;
+  EXPECT_GT(many->surfacePieces, 1);
+  EXPECT_GT(many->sharpEdges, 0);
+}
+
 }  // namespace
 }  // namespace gr

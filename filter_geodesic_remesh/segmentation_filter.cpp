@@ -80,8 +80,8 @@ void logSegmentation(const SegmentationResult& r, const SegmentationParams& p, b
             " points inserted): its triangles are poor");
   if (r.snappedFaces > 0)
     ctx.log(std::to_string(r.snappedFaces) +
-            " faces moved across region boundaries: boundaries put on the sharp edges beside them, and "
-            "straightened where there are none");
+            " faces moved across region boundaries: boundaries put on the creases beside them and straightened "
+            "elsewhere");
   if (r.strayFacesMoved > 0)
     ctx.log(std::to_string(r.strayFacesMoved) +
             " faces given to a neighbouring region so that each region is one piece");

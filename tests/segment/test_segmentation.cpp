@@ -138,6 +138,54 @@ TEST(Segmentation, AddsRegionsUntilEveryOneIsADisk) {
   EXPECT_EQ(measure(torus, t->faceRegion, t->regions).nonDisks, 0);
 }
 
+// A per-vertex field as the speed (UseQualityAsSpeed) on a surface cut at its sharp edges: the
+// field is read at each vertex copy's input vertex. A field that slows the fronts high up makes
+// the regions smaller there than below (the density of the adaptive metric), and they stay disks
+// that do not cross fandisk's sharp edges.
+TEST(Segmentation, QualityAsSpeedOnACutSurface) {
+  const TriMesh m = test::loadRealMesh("fandisk.off");
+  double lo = INFINITY, hi = -INFINITY;
+  for (const Vec3& p : m.positions) {
+    lo = std::min(lo, p.z());
+    hi = std::max(hi, p.z());
+  }
+  std::vector<double> field(m.vertexCount());
+  for (int v = 0; v < m.vertexCount(); ++v) field[v] = (m.positions[v].z() - lo) / (hi - lo);
+  SegmentationParams p;
+  p.regions = 40;
+  p.speedField = AdaptiveField::VertexQuality;
+  p.featureAlignment = 4.0;
+  const Expected<SegmentationResult> r = segmentSurface(m, field, p);
+  ASSERT_TRUE(r) << r.status().message;
+  EXPECT_GT(r->sharpEdges, 0);
+  expectConsistent(m, *r);
+  const SegmentationFigures fig = measure(m, r->faceRegion, r->regions);
+  EXPECT_EQ(fig.nonDisks, 0);
+  EXPECT_GT(fig.sharpCovered, 0.9);
+  // Mean region area in the upper and the lower half (by the regions' seeds).
+  double upper = 0.0, lower = 0.0;
+  int upperCount = 0, lowerCount = 0;
+  std::vector<double> area(r->regions, 0.0);
+  for (int f = 0; f < m.faceCount(); ++f) {
+    const Tri& t = m.triangles[f];
+    area[r->faceRegion[f]] +=
+        0.5 * (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]).norm();
+  }
+  for (int k = 0; k < r->regions; ++k)
+    if (r->seedPosition[k].z() > 0.5 * (lo + hi)) {
+      upper += area[k];
+      ++upperCount;
+    } else {
+      lower += area[k];
+      ++lowerCount;
+    }
+  ASSERT_GT(upperCount, 0);
+  ASSERT_GT(lowerCount, 0);
+  std::printf("quality as speed: %d regions up (mean area %.4g), %d down (%.4g)\n", upperCount, upper / upperCount,
+              lowerCount, lower / lowerCount);
+  EXPECT_LT(upper / upperCount, lower / lowerCount);
+}
+
 TEST(Segmentation, RefusesBadInput) {
   const TriMesh m = test::planeGrid(4);
   SegmentationParams p;

@@ -17,6 +17,16 @@ inline Vec3 areaNormal(const TriMesh& mesh, const Tri& t) {
 }
 inline Vec3 areaNormal(const TriMesh& mesh, int face) { return areaNormal(mesh, mesh.triangles[face]); }
 
+/// Per face, its unit normal (zero for a face of no area).
+inline std::vector<Vec3> unitFaceNormals(const TriMesh& mesh) {
+  std::vector<Vec3> normal(mesh.faceCount());
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Vec3 n = areaNormal(mesh, f);
+    normal[f] = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero();
+  }
+  return normal;
+}
+
 /// Barycentric coordinates (of a, b, c) of the point of triangle (a, b, c) nearest to p
 /// (Ericson, Real-Time Collision Detection, §5.1.5: the vertex, edge or interior region of p).
 inline Vec3 closestPointBarycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {

@@ -18,11 +18,7 @@ int findRoot(std::vector<int>& parent, int x) {
 }  // namespace
 
 std::vector<char> sharpEdgeCorners(const TriMesh& mesh, double degrees) {
-  std::vector<Vec3> normal(mesh.faceCount());
-  for (int f = 0; f < mesh.faceCount(); ++f) {
-    const Vec3 n = areaNormal(mesh, f);
-    normal[f] = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero();
-  }
+  const std::vector<Vec3> normal = unitFaceNormals(mesh);
   const double cosine = std::cos(degrees * kPi / 180.0);
   std::vector<char> sharp(3 * mesh.faceCount(), 0);
   for (int c = 0; c < 3 * mesh.faceCount(); ++c) {

@@ -18,11 +18,7 @@ constexpr double kKeepLabel = 1e-6;           ///< cost of moving a face, in mea
 
 /// Per corner, the weighted length w(e) |e| of the edge facing it (0 for a boundary edge).
 std::vector<double> weightedLengths(const TriMesh& mesh) {
-  std::vector<Vec3> normal(mesh.faceCount());
-  for (int f = 0; f < mesh.faceCount(); ++f) {
-    const Vec3 n = areaNormal(mesh, f);
-    normal[f] = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero();
-  }
+  const std::vector<Vec3> normal = unitFaceNormals(mesh);
   std::vector<double> w(3 * mesh.faceCount(), 0.0);
   for (int c = 0; c < 3 * mesh.faceCount(); ++c) {
     const int o = mesh.oppositeCorner[c];

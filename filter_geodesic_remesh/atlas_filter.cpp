@@ -31,6 +31,10 @@ void logAtlas(const AtlasResult& r, const std::string& texture, double ms, Filte
     tutte += c.tutte;
     apart += c.facesApart;
   }
+  if (r.segmentation.regionsAsked < r.regionsAsked)
+    ctx.log("Regions lowered from " + std::to_string(r.regionsAsked) + " to " +
+            std::to_string(r.segmentation.regionsAsked) + ": at most one chart per " +
+            std::to_string(AtlasParams::kFacesPerChart) + " faces");
   ctx.log("Geodesic texture atlas: " + std::to_string(r.charts.size()) + " charts (" +
           std::to_string(r.segmentation.regionsAsked) + " regions asked, " +
           std::to_string(r.segmentation.regionsAdded) + " added so that every chart is a disk)");

@@ -328,7 +328,11 @@ Expected<ChartMap> flattenChart(const TriMesh& patch, const LleFlatteningParams&
 Expected<AtlasResult> buildTextureAtlas(const TriMesh& mesh, const AtlasParams& params, Progress progress) {
   if (Status s = checkAtlasParams(mesh, params); !s) return s;
   AtlasResult r;
-  Expected<SegmentationResult> seg = segmentSurface(mesh, {}, params.segmentation, progress.sub(0.0, 0.5));
+  r.regionsAsked = params.segmentation.regions;
+  SegmentationParams segmentation = params.segmentation;
+  if (segmentation.regions >= 1)
+    segmentation.regions = std::min(segmentation.regions, std::max(1, mesh.faceCount() / AtlasParams::kFacesPerChart));
+  Expected<SegmentationResult> seg = segmentSurface(mesh, {}, segmentation, progress.sub(0.0, 0.5));
   if (!seg) return seg.status();
   r.segmentation = std::move(*seg);
   r.faceChart = r.segmentation.faceRegion;

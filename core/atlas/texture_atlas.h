@@ -45,6 +45,10 @@ struct AtlasParams {
   /// B and K of each chart's LLE, B the most a chart gets: a chart of V vertices gets at most
   /// V / 5 and at most max(25, V / 50) (its ARAP relaxation does the rest); K < B.
   LleFlatteningParams flattening;
+  /// A mesh of F faces gets at most max(1, F / kFacesPerChart) charts, whatever was asked: more
+  /// regions than that leave some without faces or not disks (a cube's 12 faces at the default 30
+  /// regions were refused; they now get 3 charts, and the atlas logs that it lowered the count).
+  static constexpr int kFacesPerChart = 4;
   int textureSize = 1024;  ///< texels per side of the (square) texture, >= 16
   int gutter = 4;          ///< empty texels around each chart, >= 0
 };
@@ -60,6 +64,7 @@ struct AtlasResult {
   std::vector<Vec2> cornerUv;  ///< per corner 3 f + k of the input: its texture coordinate
   std::vector<int> faceChart;  ///< per face, its chart
   std::vector<AtlasChart> charts;
+  int regionsAsked = 0;     ///< AtlasParams' regions; segmentation.regionsAsked is what was used (kFacesPerChart)
   int repairedCharts = 0;   ///< charts whose LLE map was repaired (untangled or Tutte's)
   UvDistortion distortion;  ///< of the whole atlas
   double packing = 0.0;     ///< UV area of the charts / area of the unit square

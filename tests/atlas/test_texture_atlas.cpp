@@ -275,6 +275,36 @@ TEST(TextureAtlas, CleanFailures) {
   EXPECT_EQ(buildTextureAtlas(nm).status().code, StatusCode::NonManifold);
 }
 
+// Meshes of a few faces at the defaults (30 regions asked): a tetrahedron, a cube and an octahedron,
+// closed, and one triangle and a square of two, open. Each gets a valid atlas with at most one chart
+// per AtlasParams::kFacesPerChart faces asked of the segmentation (30 asked of a cube's 12 faces
+// left regions without faces: refused before).
+TEST(TextureAtlas, FewFacesAtTheDefaults) {
+  const std::vector<std::pair<const char*, Expected<TriMesh>>> meshes = {
+      {"tetrahedron", buildTriMesh({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)},
+                                   {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}})},
+      {"cube", test::unitCube()},
+      {"octahedron",
+       buildTriMesh({Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)},
+                    {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}})},
+      {"triangle", buildTriMesh({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {{0, 1, 2}})},
+      {"square", buildTriMesh({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)}, {{0, 1, 2}, {1, 3, 2}})}};
+  for (const auto& [name, mesh] : meshes) {
+    SCOPED_TRACE(name);
+    ASSERT_TRUE(mesh) << mesh.status().message;
+    const Expected<AtlasResult> r = buildTextureAtlas(*mesh);
+    ASSERT_TRUE(r) << r.status().message;
+    const AtlasFigures fig = judge(*mesh, *r);
+    expectValid(fig);
+    const int cap = std::max(1, mesh->faceCount() / AtlasParams::kFacesPerChart);
+    std::printf("%-12s %d faces: %zu charts (%d regions asked of the segmentation)\n", name, mesh->faceCount(),
+                r->charts.size(), r->segmentation.regionsAsked);
+    EXPECT_EQ(r->regionsAsked, AtlasParams().segmentation.regions);
+    EXPECT_EQ(r->segmentation.regionsAsked, cap);
+    EXPECT_EQ(static_cast<int>(r->charts.size()), r->segmentation.regions);
+  }
+}
+
 // Every mesh of the data set: a valid atlas (the oracle's counts all zero, charts disks) or a
 // clean failure (InvalidInput, NonManifold or Degenerate, with a message).
 class DataSetAtlas : public ::testing::TestWithParam<std::string> {};

@@ -1341,6 +1341,20 @@ TEST_F(FilterInProcess, TextureAtlasBadInputLeavesTheDocumentAlone) {
   expectCleanFailure(*mm, StatusCode::InvalidInput, "Regions");
 }
 
+// A cube of 12 faces at the filter's defaults (30 regions): an atlas of at most 12 / 4 charts, with
+// the lowered count in the log (refused before: regions without faces).
+TEST_F(FilterInProcess, TextureAtlasOfACubeAtTheDefaults) {
+  const TriMesh cube = test::unitCube();
+  MeshModel* mm = addMesh(doc, cube.positions, cube.triangles);
+  use("Parametrization: Geodesic Texture Atlas");
+  declare(*mm);
+  ASSERT_EQ(params.getInt(filters::param::kRegions), 30);
+  ASSERT_TRUE(apply()) << logText();
+  expectValidAtlas(*mm);
+  EXPECT_NE(logText().find("Regions lowered from 30 to 3: at most one chart per 4 faces"), std::string::npos)
+      << logText();
+}
+
 TEST_F(FilterInProcess, LleFlatteningOfADiskWithAFlatLayer) {
   const TriMesh grid = test::planeGrid(30, 1.0, 0.2);
   MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);

@@ -70,11 +70,7 @@ TEST(ExactGeodesic, UnrolledPrismWithVerticesOnlyOnItsRims) {
 // A unit cube of 12 triangles: the far corner is sqrt(5) away (two faces unfolded), a face's far
 // corner sqrt(2), an edge's end 1.
 TEST(ExactGeodesic, CornersOfACube) {
-  std::vector<Vec3> p;
-  for (int i = 0; i < 8; ++i) p.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
-  std::vector<Tri> t = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-                        {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
-  const TriMesh m = std::move(buildTriMesh(std::move(p), std::move(t))).value();
+  const TriMesh m = test::unitCube();
   const std::vector<double> d = exactFrom(m, 0);
   ASSERT_EQ(d.size(), 8u);
   for (int v = 0; v < 8; ++v) {

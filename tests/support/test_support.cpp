@@ -76,6 +76,14 @@ TriMesh planeGrid(int n, double size, double jitter, unsigned seed) {
   return std::move(buildTriMesh(std::move(pos), std::move(tris))).value();
 }
 
+TriMesh unitCube() {
+  std::vector<Vec3> p;
+  for (int i = 0; i < 8; ++i) p.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  std::vector<Tri> t = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                        {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  return std::move(buildTriMesh(std::move(p), std::move(t))).value();
+}
+
 TriMesh icosphere(int level, double r) {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
   std::vector<Vec3> pos = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},

@@ -35,6 +35,9 @@ void logAtlas(const AtlasResult& r, const std::string& texture, double ms, Filte
     ctx.log("Regions lowered from " + std::to_string(r.regionsAsked) + " to " +
             std::to_string(r.segmentation.regionsAsked) + ": at most one chart per " +
             std::to_string(AtlasParams::kFacesPerChart) + " faces");
+  if (r.segmentation.splitVertices > 0)
+    ctx.log(std::to_string(r.segmentation.splitVertices) +
+            " non-manifold vertices (fans of faces meeting at one vertex): no chart holds two fans of one");
   ctx.log("Geodesic texture atlas: " + std::to_string(r.charts.size()) + " charts (" +
           std::to_string(r.segmentation.regionsAsked) + " regions asked, " +
           std::to_string(r.segmentation.regionsAdded) + " added so that every chart is a disk)");

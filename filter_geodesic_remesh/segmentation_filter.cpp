@@ -74,6 +74,10 @@ void logSegmentation(const SegmentationResult& r, const SegmentationParams& p, b
     ctx.log("Fronts stopped at " + std::to_string(r.sharpEdges) + " sharp edges (normals more than " +
             formatNumber(p.sharpEdgeAngle) + " degrees apart): the surface in " + std::to_string(r.surfacePieces) +
             (r.surfacePieces == 1 ? " piece" : " pieces, seeds shared by area"));
+  if (r.splitVertices > 0)
+    ctx.log(std::to_string(r.splitVertices) +
+            " non-manifold vertices (fans of faces meeting at one vertex): the fronts ran with one vertex per fan, "
+            "and no region holds two fans of one");
   if (!r.speedFallback.empty()) ctx.warn(r.speedFallback);
   if (r.refined)
     ctx.log("Fronts ran on the intrinsic Delaunay refinement of the input (" + std::to_string(r.insertedPoints) +

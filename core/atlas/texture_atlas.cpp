@@ -249,7 +249,8 @@ Status checkAtlasParams(const TriMesh& mesh, const AtlasParams& p) {
                         std::to_string(mesh.topology.inconsistentEdges) +
                         " edges between faces of opposite orientation); re-orient them first (Filters > Normals, "
                         "Curvatures and Orientation > Re-Orient all faces coherentely)");
-  if (!mesh.topology.isManifold())
+  // Non-manifold vertices are fine: the segmentation splits them, and no chart holds two fans.
+  if (mesh.topology.nonManifoldEdges > 0)
     return nonManifold("texture atlas: the mesh has " + mesh.topology.nonManifoldCounts() +
                        "; clean it first (Filters > Cleaning and Repairing)");
   return Status::ok();

@@ -186,10 +186,10 @@ int fillUnlabelled(const TriMesh& mesh, std::vector<int>& faceRegion) {
 
 Status checkSegmentationInput(const TriMesh& mesh, const std::vector<double>& values, const SegmentationParams& p) {
   if (mesh.faceCount() == 0) return invalidInput("segmentation: the mesh has no faces");
-  if (!mesh.topology.isManifold())
-    return nonManifold("segmentation: the mesh is not manifold (" + std::to_string(mesh.topology.nonManifoldEdges) +
-                       " edges, " + std::to_string(mesh.topology.nonManifoldVertices) +
-                       " vertices): regions could not be disks; clean it first");
+  if (mesh.topology.nonManifoldEdges > 0)
+    return nonManifold("segmentation: the mesh has " + std::to_string(mesh.topology.nonManifoldEdges) +
+                       " non-manifold edges (three or more faces on an edge): regions could not be disks; clean it "
+                       "first (Filters > Cleaning and Repairing)");
   const int inFaces = mesh.vertexCount() - mesh.topology.isolatedVertices;
   if (p.regions < 1 || p.regions > inFaces)
     return invalidInput("segmentation: Regions must be between 1 and the " + std::to_string(inFaces) +
@@ -361,16 +361,19 @@ std::vector<double> pieceAreas(const TriMesh& cut, std::vector<int>* pieceOfFace
 /// some edge that sharp), else `mesh` itself (`cut` left empty). A piece the cut would leave
 /// smaller than kSmallestPiece of a region's mean area (a scan's noise: armadillo has 125 edges
 /// over 60 degrees, around specks of a few faces) is not cut off: it could not be a region, and
-/// regions would have to be rings around it.
+/// regions would have to be rings around it. A non-manifold vertex (fans of faces meeting at it)
+/// is always split, one copy per fan (cutAlongEdges does that by itself): fronts need a manifold.
 Expected<const TriMesh*> frontSurface(const TriMesh& mesh, const SegmentationParams& p, CutSurface* cut,
                                       SegmentationResult* out) {
-  if (p.sharpEdgeAngle <= 0.0) return &mesh;
-  std::vector<char> sharp = sharpEdgeCorners(mesh, p.sharpEdgeAngle);
+  const bool pinched = mesh.topology.nonManifoldVertices > 0;
+  if (p.sharpEdgeAngle <= 0.0 && !pinched) return &mesh;
+  std::vector<char> sharp =
+      p.sharpEdgeAngle > 0.0 ? sharpEdgeCorners(mesh, p.sharpEdgeAngle) : std::vector<char>(3 * mesh.faceCount(), 0);
   for (;;) {
     Expected<CutSurface> c = cutAlongEdges(mesh, sharp);
     if (!c) return c.status();
     out->sharpEdges = c->sharpEdges;
-    if (c->sharpEdges == 0) return &mesh;
+    if (c->sharpEdges == 0 && !pinched) return &mesh;
     std::vector<int> piece;
     const std::vector<double> area = pieceAreas(c->mesh, &piece);
     const double smallest = kSmallestPiece * std::accumulate(area.begin(), area.end(), 0.0) / p.regions;
@@ -494,6 +497,7 @@ Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vect
   if (!cutOrInput) return cutOrInput.status();
   const TriMesh& work = **cutOrInput;  // the input, or the input cut open at its sharp edges
   out.surfacePieces = work.topology.components;
+  out.splitVertices = mesh.topology.nonManifoldVertices;
   std::vector<double> workValues;  // the field on the cut surface's vertices, from their origins
   if (!cut.origin.empty() && params.speedField == AdaptiveField::VertexQuality && !values.empty())
     for (int v : cut.origin) workValues.push_back(values[v]);

@@ -94,7 +94,10 @@ struct SegmentationResult {
   std::vector<Vec3> seedPosition;  ///< per region, its seed in 3D
   int sharpEdges = 0;              ///< edges the fronts did not cross (sharpEdgeAngle)
   int surfacePieces = 0;           ///< connected pieces of the surface the fronts ran on
-  bool refined = false;            ///< the fronts ran on the intrinsic refinement of the input
+  /// Non-manifold vertices of the input, split into one vertex per fan for the fronts; regions
+  /// are disks on the input itself (none holds two fans of such a vertex).
+  int splitVertices = 0;
+  bool refined = false;  ///< the fronts ran on the intrinsic refinement of the input
   int insertedPoints = 0;
   double curvatureRadius = 0.0;  ///< the ball radius used (featureAlignment > 0, TotalCurvature)
   std::string speedFallback;     ///< the speed mapping's fallback, if it took one (for the log)
@@ -122,10 +125,12 @@ class RegionTopologyCounter {
   int mark_ = 0;
 };
 
-/// Segments `mesh` (manifold, with faces). `values` is the per-vertex field when speedField is
+/// Segments `mesh` (no non-manifold edge, with faces; a non-manifold vertex is split for the
+/// fronts, SegmentationResult::splitVertices). `values` is the per-vertex field when speedField is
 /// VertexQuality (not read otherwise). Fails with InvalidInput (no faces, regions < 1 or more
 /// than the vertices, iterations < 0, a negative or non-finite strength, a field of the wrong
-/// size or with a NaN; regions that cannot all be made disks, see maxDiskRounds), NonManifold,
+/// size or with a NaN; regions that cannot all be made disks, see maxDiskRounds), NonManifold
+/// (an edge of three or more faces),
 /// Cancelled.
 Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vector<double>& values,
                                             const SegmentationParams& params = {}, Progress progress = {});

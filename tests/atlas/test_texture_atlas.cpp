@@ -305,6 +305,18 @@ TEST(TextureAtlas, FewFacesAtTheDefaults) {
   }
 }
 
+// Two grids meeting at one corner (a non-manifold vertex), refused before: a valid atlas, no chart
+// holding faces of both grids (each chart a disk of the input as it is, recounted).
+TEST(TextureAtlas, TwoFansAtOneVertex) {
+  const TriMesh bowtie = test::gridsMeetingAtACorner(12);
+  ASSERT_EQ(bowtie.topology.nonManifoldVertices, 1);
+  const Expected<AtlasResult> r = buildTextureAtlas(bowtie);
+  ASSERT_TRUE(r) << r.status().message;
+  expectValid(judge(bowtie, *r));
+  EXPECT_EQ(r->segmentation.splitVertices, 1);
+  std::printf("two grids at a corner: %zu charts\n", r->charts.size());
+}
+
 // Every mesh of the data set: a valid atlas (the oracle's counts all zero, charts disks) or a
 // clean failure (InvalidInput, NonManifold or Degenerate, with a message).
 class DataSetAtlas : public ::testing::TestWithParam<std::string> {};

@@ -1355,6 +1355,22 @@ TEST_F(FilterInProcess, TextureAtlasOfACubeAtTheDefaults) {
       << logText();
 }
 
+// Two grids meeting at a corner (one non-manifold vertex): segmented and given an atlas, with the
+// split vertex in the log (both filters refused it before).
+TEST_F(FilterInProcess, SegmentationAndAtlasAcceptANonManifoldVertex) {
+  const TriMesh bowtie = test::gridsMeetingAtACorner(10);
+  for (const char* filter :
+       {"Segmentation: Geodesic Centroidal Tessellation", "Parametrization: Geodesic Texture Atlas"}) {
+    SCOPED_TRACE(filter);
+    MeshModel* mm = addMesh(doc, bowtie.positions, bowtie.triangles);
+    use(filter);
+    declare(*mm);
+    ASSERT_TRUE(apply()) << logText();
+    EXPECT_NE(logText().find("1 non-manifold vertices (fans of faces meeting at one vertex)"), std::string::npos)
+        << logText();
+  }
+}
+
 TEST_F(FilterInProcess, LleFlatteningOfADiskWithAFlatLayer) {
   const TriMesh grid = test::planeGrid(30, 1.0, 0.2);
   MeshModel* mm = addMesh(doc, grid.positions, grid.triangles);

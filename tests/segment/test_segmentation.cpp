@@ -186,6 +186,33 @@ TEST(Segmentation, QualityAsSpeedOnACutSurface) {
   EXPECT_LT(upper / upperCount, lower / lowerCount);
 }
 
+// Two 8 x 8 grids meeting at one corner (a non-manifold vertex: two fans of faces): refused
+// before, now the fronts run with the vertex split, and every region is a disk of the input as it
+// is (recounted on its own vertex numbers: no region holds faces of both grids at the corner).
+TEST(Segmentation, TwoFansAtOneVertex) {
+  const TriMesh bowtie = test::gridsMeetingAtACorner(8);
+  const int gridFaces = bowtie.faceCount() / 2;
+  ASSERT_EQ(bowtie.topology.nonManifoldVertices, 1);
+  ASSERT_EQ(bowtie.topology.nonManifoldEdges, 0);
+  for (const int regions : {1, 6, 20}) {
+    SCOPED_TRACE(regions);
+    const Expected<SegmentationResult> r = segment(bowtie, regions);
+    ASSERT_TRUE(r) << r.status().message;
+    expectConsistent(bowtie, *r);
+    EXPECT_EQ(r->splitVertices, 1);
+    const SegmentationFigures fig = measure(bowtie, r->faceRegion, r->regions);
+    EXPECT_EQ(fig.nonDisks, 0);
+    EXPECT_EQ(fig.empty, 0);
+    for (int f = 0; f < gridFaces; ++f)  // no region on both grids
+      for (int g = gridFaces; g < bowtie.faceCount(); ++g) ASSERT_NE(r->faceRegion[f], r->faceRegion[g]);
+  }
+  // An edge of three faces is still refused.
+  const Expected<TriMesh> fin = buildTriMesh(
+      {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1)}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  ASSERT_TRUE(fin);
+  EXPECT_EQ(segment(*fin, 1).status().code, StatusCode::NonManifold);
+}
+
 TEST(Segmentation, RefusesBadInput) {
   const TriMesh m = test::planeGrid(4);
   SegmentationParams p;

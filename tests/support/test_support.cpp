@@ -76,6 +76,19 @@ TriMesh planeGrid(int n, double size, double jitter, unsigned seed) {
   return std::move(buildTriMesh(std::move(pos), std::move(tris))).value();
 }
 
+TriMesh gridsMeetingAtACorner(int n) {
+  const TriMesh grid = planeGrid(n);
+  const int count = grid.vertexCount(), corner = count - 1;  // the grid's vertex at (1, 1)
+  std::vector<Vec3> positions = grid.positions;
+  for (const Vec3& p : grid.positions) positions.push_back(Vec3(2, 2, 0) - p);
+  std::vector<Tri> triangles = grid.triangles;
+  for (Tri t : grid.triangles) {
+    for (int& v : t) v = v == corner ? corner : v + count;
+    triangles.push_back(t);
+  }
+  return std::move(buildTriMesh(std::move(positions), std::move(triangles))).value();
+}
+
 TriMesh unitCube() {
   std::vector<Vec3> p;
   for (int i = 0; i < 8; ++i) p.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);

@@ -18,6 +18,9 @@ TriMesh loadRealMesh(const std::string& name);
 TriMesh planeGrid(int n, double size = 1.0, double jitter = 0.0, unsigned seed = 1);
 /// Icosphere of radius r, subdivided `level` times (level 0 = icosahedron).
 TriMesh icosphere(int level, double r = 1.0);
+/// Two planeGrid(n) meeting at one corner, (1, 1): the second turned by 180 degrees about it.
+/// That vertex is non-manifold (two fans of faces); every edge is manifold.
+TriMesh gridsMeetingAtACorner(int n);
 /// The unit cube [0, 1]^3 in 12 triangles facing out; vertex i is (i & 1, i >> 1 & 1, i >> 2 & 1).
 TriMesh unitCube();
 

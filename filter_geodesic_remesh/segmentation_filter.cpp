@@ -88,7 +88,10 @@ void logSegmentation(const SegmentationResult& r, const SegmentationParams& p, b
             "elsewhere");
   if (r.strayFacesMoved > 0)
     ctx.log(std::to_string(r.strayFacesMoved) +
-            " faces given to a neighbouring region so that each region is one piece");
+            " faces given to a neighbouring region so that each region is one piece and no region rings a hole");
+  if (r.holesOpened > 0)
+    ctx.log(std::to_string(r.holesOpened) +
+            " regions cut open around a hole of the mesh (a strip of faces from the hole to a neighbouring region)");
   ctx.log(std::string("Region index in face quality, one colour per region in face colour, faces on region "
                       "boundaries selected") +
           (layers ? "; one layer per region" : ""));

@@ -166,6 +166,71 @@ int mergeStrayPieces(const TriMesh& mesh, std::vector<int>& faceRegion, int regi
 /// Gives the faces no front reached (the pieces of a cut surface that got no seed) to the labelled
 /// regions around them, nearest first (a breadth-first search over the input's faces). Returns
 /// the faces given.
+/// Regions around a hole: a boundary loop of the input whose faces all lie in one region makes
+/// that region a ring, and no Voronoi cell can split a hole of a few edges (ogre.obj has holes of
+/// 4 to 6 edges; a seed on the rim owns all of it). The faces of the shortest path of faces from
+/// the rim to a face next to another region are given to that region: the ring is cut open and
+/// the other region grows a strip, both disks. Returns the holes so opened; `facesMoved` gets the
+/// faces given away.
+int cutRingsAroundHoles(const TriMesh& mesh, std::vector<int>& faceRegion, int* facesMoved) {
+  if (mesh.topology.boundaryEdges == 0) return 0;
+  std::vector<int> parent(mesh.vertexCount());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
+    if (mesh.oppositeCorner[c] < 0) parent[root(mesh.vertex(TriMesh::next(c)))] = root(mesh.vertex(TriMesh::prev(c)));
+  constexpr int kNone = -1, kMixed = -2;
+  std::vector<int> loopRegion(mesh.vertexCount(), kNone);  // per loop (its root): the one region along it
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c) {
+    if (mesh.oppositeCorner[c] >= 0) continue;
+    int& r = loopRegion[root(mesh.vertex(TriMesh::next(c)))];
+    const int here = faceRegion[TriMesh::face(c)];
+    r = r == kNone ? here : (r == here ? r : kMixed);
+  }
+  int opened = 0;
+  *facesMoved = 0;
+  std::vector<int> from(mesh.faceCount(), -2), queue;
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    if (root(v) != v || loopRegion[v] < 0) continue;
+    const int r = loopRegion[v];
+    // Faces of r from the rim of loop v outward, until a face with a neighbour in another region.
+    queue.clear();
+    for (int c = 0; c < 3 * mesh.faceCount(); ++c)
+      if (mesh.oppositeCorner[c] < 0 && root(mesh.vertex(TriMesh::next(c))) == v && from[TriMesh::face(c)] == -2) {
+        from[TriMesh::face(c)] = -1;
+        queue.push_back(TriMesh::face(c));
+      }
+    int end = -1, other = -1;
+    for (size_t head = 0; head < queue.size() && end < 0; ++head) {
+      const int f = queue[head];
+      for (int c = 3 * f; c < 3 * f + 3 && end < 0; ++c) {
+        const int o = mesh.oppositeCorner[c];
+        if (o < 0) continue;
+        const int g = TriMesh::face(o);
+        if (faceRegion[g] != r) {
+          end = f;
+          other = faceRegion[g];
+        } else if (from[g] == -2) {
+          from[g] = f;
+          queue.push_back(g);
+        }
+      }
+    }
+    if (end >= 0) {
+      ++opened;
+      for (int f = end; f >= 0; f = from[f]) {
+        faceRegion[f] = other;
+        ++*facesMoved;
+      }
+    }
+    for (int f : queue) from[f] = -2;
+  }
+  return opened;
+}
+
 int fillUnlabelled(const TriMesh& mesh, std::vector<int>& faceRegion) {
   std::vector<int> queue;
   for (int f = 0; f < mesh.faceCount(); ++f)
@@ -227,6 +292,32 @@ Expected<Metric> segmentationMetric(const TriMesh& mesh, const std::vector<doubl
 /// added; *nonDisk receives the regions that are not disks.
 /// Regions are counted on `mesh`, seeds placed on the fronts' surface `fronts` (the same faces;
 /// `distance` per vertex of `fronts`).
+/// Per region, a vertex of `fronts` whose input vertex the region also holds through another copy
+/// (two fans of a non-manifold vertex, split for the fronts), the farther of the two from the
+/// seeds; -1 where there is none. A seed there parts the two fans, where a seed at the region's
+/// farthest vertex may not (polygon_mesh.off: a region around such a vertex for 65 rounds).
+std::vector<int> secondCopies(const TriMesh& mesh, const TriMesh& fronts, const std::vector<int>& faceRegion,
+                              const std::vector<double>& distance, int regions) {
+  std::vector<int> second(regions, -1);
+  if (mesh.topology.nonManifoldVertices == 0) return second;
+  std::vector<char> copied(mesh.vertexCount(), 0);
+  for (int f = 0; f < mesh.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) copied[mesh.triangles[f][k]] |= fronts.triangles[f][k] != mesh.triangles[f][k];
+  std::unordered_map<long long, int> seen;  // (region, input vertex) -> the first copy met
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const int r = faceRegion[f];
+    for (int k = 0; k < 3 && r >= 0; ++k) {
+      const int v = mesh.triangles[f][k], w = fronts.triangles[f][k];
+      if (!copied[v]) continue;
+      const auto [it, first] = seen.emplace(static_cast<long long>(r) * mesh.vertexCount() + v, w);
+      if (first || it->second == w) continue;
+      const int far = distance[w] > distance[it->second] ? w : it->second;
+      if (second[r] < 0 || distance[far] > distance[second[r]]) second[r] = far;
+    }
+  }
+  return second;
+}
+
 int seedsForNonDisks(const TriMesh& mesh, const TriMesh& fronts, const std::vector<int>& faceRegion,
                      const std::vector<double>& distance, const std::vector<int>& isolated,
                      std::vector<SurfacePoint>& seeds, int* nonDisk, int* replaced) {
@@ -239,6 +330,7 @@ int seedsForNonDisks(const TriMesh& mesh, const TriMesh& fronts, const std::vect
     for (int v : fronts.triangles[f])
       if (farthest[r] < 0 || distance[v] > distance[farthest[r]]) farthest[r] = v;
   }
+  const std::vector<int> second = secondCopies(mesh, fronts, faceRegion, distance, regions);
   int added = 0;
   *nonDisk = 0;
   // Regions that lost all their faces to their neighbours: their seeds go to the vertices
@@ -257,7 +349,7 @@ int seedsForNonDisks(const TriMesh& mesh, const TriMesh& fronts, const std::vect
       ++*replaced;
     } else if (!topo[r].isDisk()) {
       ++*nonDisk;
-      seeds.push_back(SurfacePoint::atVertex(farthest[r]));
+      seeds.push_back(SurfacePoint::atVertex(second[r] >= 0 ? second[r] : farthest[r]));
       ++added;
     }
   }
@@ -535,6 +627,9 @@ Expected<SegmentationResult> segmentSurface(const TriMesh& mesh, const std::vect
     out.faceRegion = labelFaces(work, cell, distance);
     std::vector<int> isolated;
     out.strayFacesMoved += fillUnlabelled(mesh, out.faceRegion);
+    int ringFaces = 0;
+    out.holesOpened = cutRingsAroundHoles(mesh, out.faceRegion, &ringFaces);
+    out.strayFacesMoved += ringFaces;
     out.strayFacesMoved += mergeStrayPieces(mesh, out.faceRegion, static_cast<int>(seeds.size()), &isolated);
     int replaced = 0;
     const int added =

@@ -83,9 +83,13 @@ struct SegmentationResult {
   std::vector<int> faceRegion;  ///< per input face, its region in [0, regions)
   int regions = 0;              ///< regions got: regionsAsked + regionsAdded
   int regionsAsked = 0;
-  int regionsAdded = 0;            ///< seeds added to split regions that were not disks
-  int nonDiskRegions = 0;          ///< regions not disks in the last round (0: a result has none)
-  int strayFacesMoved = 0;         ///< faces given to a neighbouring region to keep regions connected
+  int regionsAdded = 0;     ///< seeds added to split regions that were not disks
+  int nonDiskRegions = 0;   ///< regions not disks in the last round (0: a result has none)
+  int strayFacesMoved = 0;  ///< faces given to a neighbouring region to keep regions connected
+  /// Regions cut open around a hole of the input (a boundary loop all in one region, which no cell
+  /// splits when the hole is a few edges): the faces of a path from the hole to another region go
+  /// to that region (counted in strayFacesMoved), in the last round.
+  int holesOpened = 0;
   int snappedFaces = 0;            ///< faces moved to put boundaries on sharp edges (snapToSharpEdges)
   int iterations = 0;              ///< Lloyd iterations accepted, over all rounds
   int reseeded = 0;                ///< seeds re-placed because their cell vanished

@@ -26,10 +26,11 @@ void writeWedgeUv(MeshModel& mm, const adapters::CoreView& view, const std::vect
 }
 
 void logAtlas(const AtlasResult& r, const std::string& texture, double ms, FilterContext& ctx) {
-  int tutte = 0, apart = 0;
+  int tutte = 0, apart = 0, cut = 0;
   for (const AtlasChart& c : r.charts) {
     tutte += c.tutte;
     apart += c.facesApart;
+    cut += c.splits > 0;
   }
   if (r.segmentation.regionsAsked < r.regionsAsked)
     ctx.log("Regions lowered from " + std::to_string(r.regionsAsked) + " to " +
@@ -42,8 +43,11 @@ void logAtlas(const AtlasResult& r, const std::string& texture, double ms, Filte
           std::to_string(r.segmentation.regionsAsked) + " regions asked, " +
           std::to_string(r.segmentation.regionsAdded) + " added so that every chart is a disk)");
   ctx.log(std::to_string(r.repairedCharts) + " charts repaired: " + std::to_string(tutte) +
-          " mapped by Tutte's embedding (mean-value weights) where geodesic LLE folded, " + std::to_string(apart) +
-          " laid out face by face; no flipped or overlapping triangle");
+          " mapped by Tutte's embedding (mean-value weights) where geodesic LLE folded, " + std::to_string(cut) +
+          " cut into smaller charts where no map of the whole was fit, " + std::to_string(apart) +
+          " laid out face by face (" + std::to_string(r.pieces) +
+          " pieces in the texture); no flipped or "
+          "overlapping triangle");
   ctx.log("Distortion: L2 stretch " + formatNumber(r.distortion.stretchL2) + ", conformal (sigma1/sigma2) mean " +
           formatNumber(r.distortion.conformalMean) + ", max " + formatNumber(r.distortion.conformalMax) + "; packing " +
           formatNumber(100.0 * r.packing) + "% of the texture");

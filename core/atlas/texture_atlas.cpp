@@ -27,6 +27,10 @@ constexpr int kVerticesPerBaseLarge = 50;
 constexpr int kMinBases = 25;
 /// Rounds of splitting unsure pieces and packing again before the atlas is refused (Degenerate).
 constexpr int kSplitRounds = 2;
+/// A region with no map fit for the atlas is cut into this many (its own segmentation), each
+/// flattened again, at most kSplitDepth times over, before its faces are laid out apart.
+constexpr int kSplitParts = 4;
+constexpr int kSplitDepth = 3;
 
 /// A region's faces as a mesh of its own: local vertex i is input vertex inputVertex[i].
 struct Patch {
@@ -82,24 +86,54 @@ struct Piece {
   int chart = -1;
 };
 
-/// The pieces of one region: one chart, or its faces apart when no one-to-one map was found.
+/// The faces of `patch` (a disk) in kSplitParts regions of its own segmentation, as faces of the
+/// input (`faces`, in the patch's order); empty if it cannot be split so.
+std::vector<std::vector<int>> splitRegion(const Patch& patch, const std::vector<int>& faces) {
+  SegmentationParams p;
+  p.regions = kSplitParts;
+  p.lloyd.iterations = 4;
+  const Expected<SegmentationResult> parts = segmentSurface(patch.mesh, {}, p);
+  if (!parts || parts->regions < 2) return {};
+  std::vector<std::vector<int>> facesOf(parts->regions);
+  for (size_t j = 0; j < faces.size(); ++j) facesOf[parts->faceRegion[j]].push_back(faces[j]);
+  return facesOf;
+}
+
+/// The pieces of one region: one chart; or, when no map of it is one-to-one and fit for the
+/// atlas, the pieces of kSplitParts smaller regions it is cut into (up to kSplitDepth times: a
+/// 6,500-face chart of ogre.obj whose Tutte map is not fit gets four that are); or its faces apart.
 Expected<std::vector<Piece>> regionPieces(const TriMesh& mesh, const std::vector<int>& faces,
                                           const LleFlatteningParams& params, std::vector<int>& localOf,
-                                          AtlasChart& chart, Progress progress) {
+                                          AtlasChart& chart, Progress progress, int depth = 0) {
   Expected<Patch> patch = extractPatch(mesh, faces, localOf);
   if (!patch) return patch.status();
-  chart.faces = static_cast<int>(faces.size());
-  chart.vertices = patch->mesh.vertexCount();
+  if (depth == 0) {
+    chart.faces = static_cast<int>(faces.size());
+    chart.vertices = patch->mesh.vertexCount();
+  }
   Expected<ChartMap> map = flattenChart(patch->mesh, params, progress);
   if (!map) return map.status();
-  chart.tutte = map->tutte;
-  chart.foldedBeforeRepair = map->foldedBeforeRepair;
+  chart.tutte = chart.tutte || map->tutte;
+  chart.foldedBeforeRepair += map->foldedBeforeRepair;
   std::vector<Piece> pieces;
   if (!map->uv.empty()) {
     Piece piece{faces, {}};
     for (const Tri& t : patch->mesh.triangles)
       for (int k = 0; k < 3; ++k) piece.cornerUv.push_back(map->uv[t[k]]);
     pieces.push_back(std::move(piece));
+    return pieces;
+  }
+  const std::vector<std::vector<int>> parts =
+      depth < kSplitDepth && static_cast<int>(faces.size()) >= kSplitParts * kSplitParts
+          ? splitRegion(*patch, faces)
+          : std::vector<std::vector<int>>();
+  if (!parts.empty()) {
+    ++chart.splits;
+    for (const std::vector<int>& part : parts) {
+      Expected<std::vector<Piece>> more = regionPieces(mesh, part, params, localOf, chart, progress, depth + 1);
+      if (!more) return more.status();
+      for (Piece& piece : *more) pieces.push_back(std::move(piece));
+    }
     return pieces;
   }
   chart.facesApart = true;
@@ -356,7 +390,8 @@ Expected<AtlasResult> buildTextureAtlas(const TriMesh& mesh, const AtlasParams& 
     if (Status s = packPieces(pieces, params, r); !s) return s;
   }
   for (const AtlasChart& chart : r.charts)
-    r.repairedCharts += chart.tutte || chart.facesApart || chart.foldedBeforeRepair > 0;
+    r.repairedCharts += chart.tutte || chart.facesApart || chart.foldedBeforeRepair > 0 || chart.splits > 0;
+  r.pieces = static_cast<int>(pieces.size());
   r.distortion = measureUvDistortion(mesh, r.cornerUv);
   return r;
 }

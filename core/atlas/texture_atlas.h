@@ -56,6 +56,7 @@ struct AtlasParams {
 struct AtlasChart {
   int faces = 0, vertices = 0;
   bool tutte = false;       ///< mapped by Tutte's embedding (LLE folded or its boundary crossed)
+  int splits = 0;           ///< times the region (or a part of it) was cut in smaller ones for want of a map
   bool facesApart = false;  ///< even Tutte's was not one-to-one in floating point: faces laid out apart
   int foldedBeforeRepair = 0;
 };
@@ -65,7 +66,8 @@ struct AtlasResult {
   std::vector<int> faceChart;  ///< per face, its chart
   std::vector<AtlasChart> charts;
   int regionsAsked = 0;     ///< AtlasParams' regions; segmentation.regionsAsked is what was used (kFacesPerChart)
-  int repairedCharts = 0;   ///< charts whose LLE map was repaired (untangled or Tutte's)
+  int repairedCharts = 0;   ///< charts whose LLE map was repaired (untangled, Tutte's, cut or faces apart)
+  int pieces = 0;           ///< pieces packed into the texture: a chart cut or laid out apart gives several
   UvDistortion distortion;  ///< of the whole atlas
   double packing = 0.0;     ///< UV area of the charts / area of the unit square
   SegmentationResult segmentation;

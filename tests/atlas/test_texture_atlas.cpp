@@ -317,6 +317,25 @@ TEST(TextureAtlas, TwoFansAtOneVertex) {
   std::printf("two grids at a corner: %zu charts\n", r->charts.size());
 }
 
+// A region with no map fit for the atlas (corner_with_sharp_edge.off at one region: its Tutte map
+// is not fit) is cut into smaller charts and flattened again, not laid out face by face as before.
+TEST(TextureAtlas, ARegionWithoutAFitMapIsCutIntoSmallerCharts) {
+  const TriMesh m = test::loadRealMesh("corner_with_sharp_edge.off");
+  AtlasParams p;
+  p.segmentation.regions = 1;
+  p.segmentation.lloyd.iterations = 3;
+  const Expected<AtlasResult> r = buildTextureAtlas(m, p);
+  ASSERT_TRUE(r) << r.status().message;
+  expectValid(judge(m, *r));
+  ASSERT_EQ(r->charts.size(), 1u);
+  std::printf("corner_with_sharp_edge: %d faces, 1 region in %d pieces, %d cuts\n", m.faceCount(), r->pieces,
+              r->charts[0].splits);
+  EXPECT_GE(r->charts[0].splits, 1);
+  EXPECT_FALSE(r->charts[0].facesApart);
+  EXPECT_GT(r->pieces, 1);
+  EXPECT_LT(r->pieces, m.faceCount());
+}
+
 // Every mesh of the data set: a valid atlas (the oracle's counts all zero, charts disks) or a
 // clean failure (InvalidInput, NonManifold or Degenerate, with a message).
 class DataSetAtlas : public ::testing::TestWithParam<std::string> {};

@@ -156,7 +156,7 @@ Status applyTotalCurvature(MeshDocument& doc, const RichParameterList& params, F
   Expected<CurrentMesh> current = currentMesh(doc);
   if (!current) return current.status();
   const TriMesh& mesh = current->view.mesh;
-  if (!mesh.topology.isManifold())
+  if (mesh.topology.nonManifoldEdges > 0)
     return nonManifold("the mesh has " + std::to_string(mesh.topology.nonManifoldEdges) + " non-manifold edges and " +
                        std::to_string(mesh.topology.nonManifoldVertices) +
                        " non-manifold vertices; repair them first (Cleaning and Repairing menu)");
@@ -177,6 +177,10 @@ Status applyTotalCurvature(MeshDocument& doc, const RichParameterList& params, F
           "from " +
           formatNumber(*lo, "%.4g") + " to " + formatNumber(*top, "%.4g") + ", " + formatNumber(kRampPercentile, "%g") +
           "th percentile " + formatNumber(hi, "%.4g") + " (colour ramp from 0 to it)");
+  if (tau->splitVertices > 0)
+    ctx.log(std::to_string(tau->splitVertices) +
+            " non-manifold vertices (fans of faces meeting at one vertex): each fan measured on its own, such a "
+            "vertex given its largest fan's curvature");
   if (tau->looksLikeTriangleSoup)
     ctx.warn(std::to_string(tau->looseFaces) + " of the " + std::to_string(mesh.faceCount()) +
              " faces share no edge with another face (separate triangles, as an STL file read without merging its "

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/base/two_threads.h"
+#include "core/mesh/sharp_cut.h"
 
 namespace gr {
 namespace {
@@ -346,10 +347,9 @@ Status checkCurvatureInput(const TriMesh& mesh, const CurvatureParams& params) {
   return Status::ok();
 }
 
-}  // namespace
-
-Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvatureParams& params, Progress progress) {
-  if (Status s = checkCurvatureInput(mesh, params); !s) return s;
+/// totalCurvature of a mesh whose fans of faces around each vertex are one (no non-manifold vertex).
+Expected<CurvatureResult> curvatureOfOneFanVertices(const TriMesh& mesh, const CurvatureParams& params,
+                                                    Progress progress) {
   const int n = mesh.vertexCount();
   const LocalMesh local = buildLocalMesh(mesh);
   const double radius = params.radius > 0.0 ? params.radius : local.meanEdgeLength;
@@ -401,6 +401,33 @@ Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvaturePar
   result.looksLikeTriangleSoup = TriMesh::looksLikeTriangleSoup(result.looseFaces, mesh.faceCount());
   progress.report(1.0, "Curvature");
   return result;
+}
+
+}  // namespace
+
+Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvatureParams& params, Progress progress) {
+  if (Status s = checkCurvatureInput(mesh, params); !s) return s;
+  if (mesh.topology.nonManifoldVertices == 0 || mesh.topology.nonManifoldEdges > 0)
+    return curvatureOfOneFanVertices(mesh, params, std::move(progress));
+  // Fans meeting at a vertex: each its own surface (one vertex copy per fan), so that no ball
+  // reaches from one through the vertex into another; a vertex gets its largest copy's value.
+  Expected<CutSurface> split = cutAlongEdges(mesh, std::vector<char>(3 * mesh.faceCount(), 0));
+  if (!split) return split.status();
+  Expected<CurvatureResult> r = curvatureOfOneFanVertices(split->mesh, params, std::move(progress));
+  if (!r) return r;
+  const int n = mesh.vertexCount();
+  for (int copy = n; copy < split->mesh.vertexCount(); ++copy) {
+    const int v = split->origin[copy];
+    if (!(r->tau[copy] > r->tau[v])) continue;
+    r->tau[v] = r->tau[copy];
+    r->k1[v] = r->k1[copy];
+    r->k2[v] = r->k2[copy];
+  }
+  r->tau.resize(n);
+  r->k1.resize(n);
+  r->k2.resize(n);
+  r->splitVertices = mesh.topology.nonManifoldVertices;
+  return r;
 }
 
 }  // namespace gr

@@ -88,10 +88,14 @@ struct CurvatureResult {
   /// and whether they are a triangle soup (TriMesh::looksLikeTriangleSoup).
   int looseFaces = 0;
   bool looksLikeTriangleSoup = false;
+  /// Non-manifold vertices (fans of faces meeting at one vertex): each fan was its own surface,
+  /// and such a vertex has its largest fan's curvature.
+  int splitVertices = 0;
 };
 
 /// Curvature of every vertex. Signs: positive where the surface is convex for its orientation
-/// (a sphere with outward-facing triangles has k1, k2 = +1/R). Isolated vertices get 0.
+/// (a sphere with outward-facing triangles has k1, k2 = +1/R). Isolated vertices get 0. Fans of
+/// faces meeting at a (non-manifold) vertex are measured apart (CurvatureResult::splitVertices).
 /// Fails (InvalidInput) on a mesh without vertices or faces or without adjacency, a negative,
 /// NaN or infinite radius; (Cancelled) if the progress callback says so.
 Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvatureParams& params = {},

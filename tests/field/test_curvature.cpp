@@ -388,6 +388,38 @@ TEST(Curvature, RadiusBelowTheOneRingUsesTheOneRing) {
   EXPECT_EQ(byDefault.tau, curvatureOf(m, h).tau);
 }
 
+// Two spheres touching at one vertex (a non-manifold vertex: two fans of faces): each fan is
+// measured on its own surface, so every vertex has the value it has on a lone sphere (no ball
+// reaches through the shared vertex into the other sphere), and 2 / R within the lone sphere's
+// bound.
+TEST(Curvature, FansAtOneVertexAreMeasuredApart) {
+  const double R = 2.0;
+  const TriMesh lone = test::icosphere(3, R);
+  const int n = lone.vertexCount(), touch = 0;
+  int antipode = -1;  // the icosphere is centrally symmetric
+  for (int v = 0; v < n && antipode < 0; ++v)
+    if ((lone.positions[v] + lone.positions[touch]).norm() < 1e-9) antipode = v;
+  ASSERT_GE(antipode, 0);
+  std::vector<Vec3> positions = lone.positions;
+  for (const Vec3& p : lone.positions) positions.push_back(p + 2.0 * lone.positions[touch]);
+  std::vector<Tri> triangles = lone.triangles;
+  const auto second = [&](int v) { return v == antipode ? touch : v + n; };
+  for (const Tri& t : lone.triangles) triangles.push_back({second(t[0]), second(t[1]), second(t[2])});
+  const TriMesh touching = std::move(buildTriMesh(positions, triangles)).value();
+  ASSERT_EQ(touching.topology.nonManifoldVertices, 1);
+  const double radius = 2.0 * lone.meanEdgeLength();
+  const CurvatureResult one = curvatureOf(lone, radius), two = curvatureOf(touching, radius);
+  ASSERT_EQ(two.splitVertices, 1);
+  double worst = 0.0;
+  for (int v = 0; v < n; ++v) {
+    worst = std::max(worst, std::abs(two.tau[v] - one.tau[v]));
+    if (v != antipode) worst = std::max(worst, std::abs(two.tau[second(v)] - one.tau[v]));
+  }
+  std::printf("two spheres touching: largest difference from a lone sphere %.2e\n", worst);
+  EXPECT_LT(worst, 1e-9);
+  EXPECT_LT(maxRelativeError(two.tau, 2.0 / R, std::vector<int>{touch}), 0.05);
+}
+
 TEST(Curvature, AcceptsOddMeshesAndKeepsTheirEffectLocal) {
   // One face of a sphere turned over (3 edges whose faces disagree on orientation), a fourth face
   // on one edge (non-manifold), a zero-area face and an isolated vertex: every tau is finite, the

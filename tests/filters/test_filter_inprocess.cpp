@@ -1008,6 +1008,19 @@ TEST_F(FilterInProcess, TotalCurvatureBadInputLeavesTheDocumentAlone) {
   EXPECT_EQ(doc.meshList.size(), 4) << "a failed filter added a layer";
 }
 
+// Two grids meeting at a corner (a non-manifold vertex): measured, flat everywhere, with the
+// split vertex in the log (refused before).
+TEST_F(FilterInProcess, TotalCurvatureAcceptsANonManifoldVertex) {
+  const TriMesh bowtie = test::gridsMeetingAtACorner(8);
+  MeshModel* mm = addMesh(doc, bowtie.positions, bowtie.triangles);
+  use("Compute Total Curvature (Normal Cycle) into Vertex Quality");
+  declare(*mm);
+  ASSERT_TRUE(apply()) << logText();
+  for (const auto& v : mm->cm.vert) ASSERT_NEAR(v.cQ(), 0.0f, 1e-5f);
+  EXPECT_NE(logText().find("1 non-manifold vertices (fans of faces meeting at one vertex)"), std::string::npos)
+      << logText();
+}
+
 TEST_F(FilterInProcess, TotalCurvatureOfASphereIsTwoOverR) {
   const double r = 2.5;
   const TriMesh sphere = test::icosphere(5, r);

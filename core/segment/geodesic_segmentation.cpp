@@ -190,18 +190,22 @@ int cutRingsAroundHoles(const TriMesh& mesh, std::vector<int>& faceRegion, int* 
     const int here = faceRegion[TriMesh::face(c)];
     r = r == kNone ? here : (r == here ? r : kMixed);
   }
+  std::vector<std::pair<int, int>> rim;  // (loop, face) for the loops inside one region
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
+    if (mesh.oppositeCorner[c] < 0 && loopRegion[root(mesh.vertex(TriMesh::next(c)))] >= 0)
+      rim.push_back({root(mesh.vertex(TriMesh::next(c))), TriMesh::face(c)});
+  std::sort(rim.begin(), rim.end());
   int opened = 0;
   *facesMoved = 0;
   std::vector<int> from(mesh.faceCount(), -2), queue;
-  for (int v = 0; v < mesh.vertexCount(); ++v) {
-    if (root(v) != v || loopRegion[v] < 0) continue;
-    const int r = loopRegion[v];
-    // Faces of r from the rim of loop v outward, until a face with a neighbour in another region.
+  for (size_t first = 0, last = 0; first < rim.size(); first = last) {
+    const int r = loopRegion[rim[first].first];
+    // Faces of r from the loop's rim outward, until a face with a neighbour in another region.
     queue.clear();
-    for (int c = 0; c < 3 * mesh.faceCount(); ++c)
-      if (mesh.oppositeCorner[c] < 0 && root(mesh.vertex(TriMesh::next(c))) == v && from[TriMesh::face(c)] == -2) {
-        from[TriMesh::face(c)] = -1;
-        queue.push_back(TriMesh::face(c));
+    for (last = first; last < rim.size() && rim[last].first == rim[first].first; ++last)
+      if (from[rim[last].second] == -2) {
+        from[rim[last].second] = -1;
+        queue.push_back(rim[last].second);
       }
     int end = -1, other = -1;
     for (size_t head = 0; head < queue.size() && end < 0; ++head) {
@@ -210,7 +214,7 @@ int cutRingsAroundHoles(const TriMesh& mesh, std::vector<int>& faceRegion, int* 
         const int o = mesh.oppositeCorner[c];
         if (o < 0) continue;
         const int g = TriMesh::face(o);
-        if (faceRegion[g] != r) {
+        if (faceRegion[g] != r && faceRegion[g] >= 0) {
           end = f;
           other = faceRegion[g];
         } else if (from[g] == -2) {

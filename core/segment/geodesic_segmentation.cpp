@@ -260,9 +260,11 @@ Status checkSegmentationInput(const TriMesh& mesh, const std::vector<double>& va
                        " non-manifold edges (three or more faces on an edge): regions could not be disks; clean it "
                        "first (Filters > Cleaning and Repairing)");
   const int inFaces = mesh.vertexCount() - mesh.topology.isolatedVertices;
-  if (p.regions < 1 || p.regions > inFaces)
-    return invalidInput("segmentation: Regions must be between 1 and the " + std::to_string(inFaces) +
-                        " vertices in faces (asked " + std::to_string(p.regions) + ")");
+  if (p.regions < 1 || p.regions > std::min(inFaces, mesh.faceCount()))
+    return invalidInput(
+        "segmentation: Regions must be between 1 and " + std::to_string(std::min(inFaces, mesh.faceCount())) +
+        " (a region needs a face and a vertex of its own: the mesh has " + std::to_string(inFaces) + " vertices in " +
+        std::to_string(mesh.faceCount()) + " faces; asked " + std::to_string(p.regions) + ")");
   if (p.lloyd.iterations < 0 || p.iterationsAfterAdding < 0 || p.maxDiskRounds < 0)
     return invalidInput("segmentation: Iterations must be >= 0");
   if (!std::isfinite(p.featureAlignment) || p.featureAlignment < 0.0)

@@ -245,6 +245,13 @@ TEST(Segmentation, RefusesBadInput) {
   EXPECT_EQ(segmentSurface(m, {}, p).status().code, StatusCode::InvalidInput);
   p.regions = 1000;
   EXPECT_EQ(segmentSurface(m, {}, p).status().code, StatusCode::InvalidInput);
+  // One triangle has 3 vertices but room for one region only: refused at once, saying why.
+  const TriMesh triangle = std::move(buildTriMesh({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {{0, 1, 2}})).value();
+  p.regions = 2;
+  const Status two = segmentSurface(triangle, {}, p).status();
+  EXPECT_EQ(two.code, StatusCode::InvalidInput);
+  EXPECT_NE(two.message.find("Regions must be between 1 and 1 (a region needs a face"), std::string::npos)
+      << two.message;
   p.regions = 3;
   p.lloyd.iterations = -1;
   EXPECT_EQ(segmentSurface(m, {}, p).status().code, StatusCode::InvalidInput);

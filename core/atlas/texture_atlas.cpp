@@ -31,6 +31,7 @@ constexpr int kSplitRounds = 2;
 /// flattened again, at most kSplitDepth times over, before its faces are laid out apart.
 constexpr int kSplitParts = 4;
 constexpr int kSplitDepth = 3;
+constexpr int kSplitIterations = 4;  ///< Lloyd iterations of that segmentation (a few: parts need not be even)
 
 /// A region's faces as a mesh of its own: local vertex i is input vertex inputVertex[i].
 struct Patch {
@@ -91,7 +92,7 @@ struct Piece {
 std::vector<std::vector<int>> splitRegion(const Patch& patch, const std::vector<int>& faces) {
   SegmentationParams p;
   p.regions = kSplitParts;
-  p.lloyd.iterations = 4;
+  p.lloyd.iterations = kSplitIterations;
   const Expected<SegmentationResult> parts = segmentSurface(patch.mesh, {}, p);
   if (!parts || parts->regions < 2) return {};
   std::vector<std::vector<int>> facesOf(parts->regions);

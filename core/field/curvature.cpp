@@ -411,7 +411,7 @@ Expected<CurvatureResult> totalCurvature(const TriMesh& mesh, const CurvaturePar
     return curvatureOfOneFanVertices(mesh, params, std::move(progress));
   // Fans meeting at a vertex: each its own surface (one vertex copy per fan), so that no ball
   // reaches from one through the vertex into another; a vertex gets its largest copy's value.
-  Expected<CutSurface> split = cutAlongEdges(mesh, std::vector<char>(3 * mesh.faceCount(), 0));
+  Expected<CutSurface> split = splitNonManifoldVertices(mesh);
   if (!split) return split.status();
   Expected<CurvatureResult> r = curvatureOfOneFanVertices(split->mesh, params, std::move(progress));
   if (!r) return r;

@@ -77,4 +77,8 @@ Expected<CutSurface> cutAlongEdges(const TriMesh& mesh, const std::vector<char>&
   return out;
 }
 
+Expected<CutSurface> splitNonManifoldVertices(const TriMesh& mesh) {
+  return cutAlongEdges(mesh, std::vector<char>(3 * mesh.faceCount(), 0));
+}
+
 }  // namespace gr

@@ -34,4 +34,8 @@ struct CutSurface {
 /// either corner of an edge may mark it). Fails as buildTriMesh.
 Expected<CutSurface> cutAlongEdges(const TriMesh& mesh, const std::vector<char>& cutCorner);
 
+/// `mesh` with each non-manifold vertex split into one copy per fan of faces (cutAlongEdges with
+/// no edge cut), as MeshLab's Split Non Manifold Vertices does. Fails as buildTriMesh.
+Expected<CutSurface> splitNonManifoldVertices(const TriMesh& mesh);
+
 }  // namespace gr

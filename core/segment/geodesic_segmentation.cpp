@@ -465,9 +465,14 @@ std::vector<double> pieceAreas(const TriMesh& cut, std::vector<int>* pieceOfFace
 Expected<const TriMesh*> frontSurface(const TriMesh& mesh, const SegmentationParams& p, CutSurface* cut,
                                       SegmentationResult* out) {
   const bool pinched = mesh.topology.nonManifoldVertices > 0;
-  if (p.sharpEdgeAngle <= 0.0 && !pinched) return &mesh;
-  std::vector<char> sharp =
-      p.sharpEdgeAngle > 0.0 ? sharpEdgeCorners(mesh, p.sharpEdgeAngle) : std::vector<char>(3 * mesh.faceCount(), 0);
+  if (p.sharpEdgeAngle <= 0.0) {
+    if (!pinched) return &mesh;
+    Expected<CutSurface> c = splitNonManifoldVertices(mesh);
+    if (!c) return c.status();
+    *cut = std::move(*c);
+    return &cut->mesh;
+  }
+  std::vector<char> sharp = sharpEdgeCorners(mesh, p.sharpEdgeAngle);
   for (;;) {
     Expected<CutSurface> c = cutAlongEdges(mesh, sharp);
     if (!c) return c.status();

@@ -106,6 +106,9 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
     ctx.log(
         "Relaxation on the input surface: " + count(relaxed.iterations) + " rounds, " + count(relaxed.moves) +
         " vertex moves, " + count(relaxed.flips) + " flips" +
+        (relaxed.polishMoves > 0
+             ? "; then " + count(relaxed.polishMoves) + " moves of the polish, raising the smallest angles"
+             : std::string()) +
         (relaxed.slidingVertices > 0
              ? "; " + count(relaxed.slidingVertices) + " vertices moved only along the input's boundaries and creases"
              : std::string()) +

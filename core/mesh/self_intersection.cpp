@@ -166,6 +166,68 @@ std::vector<std::pair<int, int>> selfIntersectingFaces(const TriMesh& mesh, int 
   return pairs;
 }
 
+std::vector<std::pair<int, int>> crossingsOfFaces(const TriMesh& mesh, const std::vector<char>& flagged) {
+  std::vector<std::pair<int, int>> pairs;
+  const int faces = mesh.faceCount();
+  const auto box = [&](int f, Vec3& lo, Vec3& hi) {
+    const Tri& t = mesh.triangles[f];
+    lo = mesh.positions[t[0]].cwiseMin(mesh.positions[t[1]]).cwiseMin(mesh.positions[t[2]]);
+    hi = mesh.positions[t[0]].cwiseMax(mesh.positions[t[1]]).cwiseMax(mesh.positions[t[2]]);
+  };
+  std::vector<int> chosen;
+  double cell = 0.0;
+  Vec3 lo, hi;
+  for (int f = 0; f < faces && f < static_cast<int>(flagged.size()); ++f)
+    if (flagged[f]) {
+      chosen.push_back(f);
+      box(f, lo, hi);
+      cell = std::max(cell, (hi - lo).maxCoeff());
+    }
+  if (chosen.empty()) return pairs;
+  cell = std::max(cell, 1e-300);  // cells as large as the largest flagged face: each meets at most 8
+  const auto index = [&](double x) { return static_cast<long long>(std::floor(x / cell)); };
+  const auto key = [](long long x, long long y, long long z) {
+    return (static_cast<unsigned long long>(x) * 73856093ULL) ^ (static_cast<unsigned long long>(y) * 19349663ULL) ^
+           (static_cast<unsigned long long>(z) * 83492791ULL);
+  };
+  std::vector<std::pair<unsigned long long, int>> entries;  // (hashed cell, flagged face)
+  for (const int f : chosen) {
+    box(f, lo, hi);
+    for (long long x = index(lo[0]); x <= index(hi[0]); ++x)
+      for (long long y = index(lo[1]); y <= index(hi[1]); ++y)
+        for (long long z = index(lo[2]); z <= index(hi[2]); ++z) entries.push_back({key(x, y, z), f});
+  }
+  std::sort(entries.begin(), entries.end());
+  std::vector<int> candidates;
+  Vec3 flo, fhi;
+  for (int g = 0; g < faces; ++g) {
+    box(g, lo, hi);
+    candidates.clear();
+    // A face larger than the cells is looked up at most 4 cells across; past that, against all.
+    const bool large = (hi - lo).maxCoeff() > 4 * cell;
+    if (large) candidates = chosen;
+    for (long long x = index(lo[0]); !large && x <= index(hi[0]); ++x)
+      for (long long y = index(lo[1]); y <= index(hi[1]); ++y)
+        for (long long z = index(lo[2]); z <= index(hi[2]); ++z) {
+          const unsigned long long k = key(x, y, z);
+          for (auto it = std::lower_bound(entries.begin(), entries.end(), std::make_pair(k, -1));
+               it != entries.end() && it->first == k; ++it)
+            candidates.push_back(it->second);
+        }
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    for (const int f : candidates) {
+      if (f == g || (flagged[g] && g < f)) continue;  // a pair of two flagged faces once
+      box(f, flo, fhi);
+      if (!((flo.array() <= hi.array()).all() && (lo.array() <= fhi.array()).all())) continue;
+      if (facesCross(mesh, std::min(f, g), std::max(f, g))) pairs.push_back({std::min(f, g), std::max(f, g)});
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
 std::vector<char> crossingVertices(const TriMesh& mesh) {
   std::vector<char> crossing(mesh.vertexCount(), 0);
   for (const auto& [f, g] : selfIntersectingFaces(mesh))

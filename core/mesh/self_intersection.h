@@ -22,6 +22,11 @@ namespace gr {
 /// Pairs (f, g), f < g, of faces that cross; at most `limit` pairs (0 = all).
 std::vector<std::pair<int, int>> selfIntersectingFaces(const TriMesh& mesh, int limit = 0);
 
+/// The pairs of selfIntersectingFaces with at least one face flagged in `flagged` (one flag per
+/// face): what a change to those faces may have made cross. The broad phase grids only the
+/// flagged faces' boxes, so the cost is O(F) box tests plus the flagged faces' neighbourhoods.
+std::vector<std::pair<int, int>> crossingsOfFaces(const TriMesh& mesh, const std::vector<char>& flagged);
+
 /// Whether faces f and g cross (the narrow phase of selfIntersectingFaces): an edge of one through
 /// the other away from shared vertices, or, in one plane, an overlap of positive area.
 bool facesCross(const TriMesh& mesh, int f, int g);

@@ -650,6 +650,56 @@ Status rescueAngles(const TriMesh& input, const Metric& metric, const SurfaceRem
   return {};
 }
 
+/// Per face of `after` (the same vertices and face count as `before`), 1 if its corners or their
+/// positions differ from before's.
+std::vector<char> changedFaces(const TriMesh& before, const TriMesh& after) {
+  std::vector<char> changed(after.faceCount(), 0);
+  for (int f = 0; f < after.faceCount(); ++f) {
+    const Tri& t = after.triangles[f];
+    changed[f] = t != before.triangles[f];
+    for (int k = 0; k < 3 && !changed[f]; ++k) changed[f] = after.positions[t[k]] != before.positions[t[k]];
+  }
+  return changed;
+}
+
+/// The final output polished (polishOnSurface) on the oriented input. A polish that makes more
+/// of its faces cross is done again with the corners of the crossing faces and their neighbours
+/// pinned, up to kPolishPinRounds times, else not kept. Only after the rescues: their choices
+/// are made on the relaxed outputs.
+void polishOutput(const TriMesh& input, const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
+  constexpr int kPolishPinRounds = 2;
+  const RelaxationParams& relaxation = params.relaxation;
+  if (relaxation.iterations <= 0 || !relaxation.raiseSmallestAngle || relaxation.polishMarginDegrees < 0 ||
+      r.looksLikeTriangleSoup)
+    return;
+  auto clock = std::chrono::steady_clock::now();
+  Expected<OrientedSurface> oriented = orientedSurface(input);
+  if (!oriented) return;
+  const TriMesh& surface = oriented->copy ? *oriented->copy : input;
+  std::vector<char> pinned;
+  for (int round = 0; round <= kPolishPinRounds; ++round) {
+    TriMesh polished = r.mesh;
+    std::vector<SurfacePoint> points = r.origin;
+    swapFlipped(points, oriented->flipped);
+    const Expected<RelaxationResult> done = polishOnSurface(polished, points, surface, relaxation, pinned);
+    if (!done || done->polishMoves == 0) break;
+    // Without crossings before, only faces the polish changed can cross now.
+    const std::vector<std::pair<int, int>> pairs = r.crossingPairs == 0
+                                                       ? crossingsOfFaces(polished, changedFaces(r.mesh, polished))
+                                                       : selfIntersectingFaces(polished);
+    if (static_cast<int>(pairs.size()) <= r.crossingPairs) {
+      swapFlipped(points, oriented->flipped);
+      r.mesh = std::move(polished);
+      r.origin = std::move(points);
+      r.relaxation.polishMoves = done->polishMoves;
+      r.relaxation.flips += done->flips;
+      break;
+    }
+    flagCrossingCorners(polished, pairs, true, pinned);
+  }
+  r.times.relaxation += lap(clock);
+}
+
 /// An output with more vertices than the input is no remesh (many components and boundary loops
 /// at a small count: boeing.off at 10% needs 5,549 vertices for its 2,741): the input, oriented,
 /// is kept instead, each vertex its own cell. Not for an input with isolated vertices, which an
@@ -685,6 +735,7 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   Expected<SurfaceRemeshResult> r = remeshOnce(input, metric, p, remeshShare, progress);
   if (!r) return r.status();
   if (Status s = rescueAngles(input, metric, p, remeshShare, progress, *r); !s) return s;
+  polishOutput(input, p, *r);
   if (Status s = keepInputIfSmaller(input, *r); !s) return s;
   auto clock = std::chrono::steady_clock::now();
   if (params.measure)

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <queue>
 #include <string>
 
 #include "core/base/math.h"
@@ -16,6 +17,8 @@ namespace gr {
 namespace {
 
 constexpr double kDegree = kPi / 180.0;
+/// The polish and the Delaunay flips after it, at most this many times (RelaxationParams).
+constexpr int kPolishPasses = 3;
 
 /// Barycentric coordinates of the point at parameter t on the edge from corner i to corner j.
 Vec3 onEdge(int i, int j, double t) {
@@ -211,6 +214,15 @@ double smallestAngleCosine(const Vec3& p, const Vec3& q, const Vec3& r) {
   return denominator > 0 ? std::min(1.0, (o1 + o2 - shortest) / denominator) : 1.0;
 }
 
+/// The smallest angle of the mesh's faces (radians).
+double smallestAngleOf(const TriMesh& mesh) {
+  double largestCosine = -1;
+  for (const Tri& t : mesh.triangles)
+    largestCosine =
+        std::max(largestCosine, smallestAngleCosine(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]));
+  return std::acos(largestCosine);
+}
+
 /// Refuses what the relaxation cannot work on: points that do not match the output or the input,
 /// a non-manifold mesh, an output without faces or with faces not oriented alike.
 Status checkRelaxationInput(const TriMesh& output, const std::vector<SurfacePoint>& points, const TriMesh& input) {
@@ -330,12 +342,7 @@ class Relaxer {
   /// again each round: the flips change the faces).
   /// Before each round: the step aim from the mesh's smallest angle, the watched faces.
   void startRound() {
-    double smallest = kPi;
-    for (int f = 0; f < output_.faceCount(); ++f) {
-      const Tri& t = output_.triangles[f];
-      smallest = std::min(smallest, std::acos(smallestAngleCosine(pos_[t[0]], pos_[t[1]], pos_[t[2]])));
-    }
-    stepAim_ = std::max(kSmallAngle, smallest + kStepMargin);
+    stepAim_ = std::max(kSmallAngle, smallestAngleOf(output_) + kStepMargin);
     collectWatchedFaces();
   }
   void collectWatchedFaces() {
@@ -387,24 +394,31 @@ class Relaxer {
   }
 
   /// A vertex on a feature curve of the input: the step along the curve, both ways, that most
-  /// raises the smallest angle of its ring (where tangent steps are tried: stepAim_).
-  void relaxAlongCurve(int v) {
+  /// raises the smallest angle of its ring (where tangent steps are tried: stepAim_). In the
+  /// polish (`polishing`), finer steps too, and only steps that raise it by kPolishGain without
+  /// adding a face under 30 degrees.
+  void relaxAlongCurve(int v, bool polishing = false) {
     CurvePoint at;
     if (freedomOf(points_[v], walker_, at) != Freedom::Curve) return;
     const double before = ring(v, pos_[v], nullptr);
-    if (before >= std::min(aim_, stepAim_)) return;
+    if (!polishing && before >= std::min(aim_, stepAim_)) return;
+    const int under = polishing ? ringFacesUnder30(v, pos_[v]) : 0;
     double ringLength = 0;
     for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c)
       ringLength += (pos_[output_.vertex(TriMesh::next(*c))] - pos_[v]).norm();
     ringLength /= output_.valence(v);
     std::vector<std::pair<double, SurfacePoint>> better;  // (smallest angle there, point), best first
-    for (const double step : {0.4, 0.2, 0.1, 0.05})
+    for (const double step : {0.4, 0.2, 0.1, 0.05, 0.025, 0.0125}) {
+      if (!polishing && step < 0.05) break;
       for (const double sign : {-1.0, 1.0}) {
         const CurvePoint to = slide(at, sign * step * ringLength, walker_);
         const SurfacePoint q = walker_.onInputEdge(to.a, to.b, to.t);
-        const double s = ring(v, walker_.pointOf(q.face, q.bary), nullptr);
+        const Vec3 x = walker_.pointOf(q.face, q.bary);
+        const double s = ring(v, x, nullptr);
+        if (polishing && !(s > before + kPolishGain && ringFacesUnder30(v, x) <= under)) continue;
         if (s > before) better.push_back({s, q});
       }
+    }
     std::stable_sort(better.begin(), better.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
     const int movesBefore = moves_;
     const double maxAway = maxDeviation_ * ringLength;
@@ -415,6 +429,254 @@ class Relaxer {
       tryMoveTo(v, q, before, maxAway);
       if (moves_ > movesBefore) break;
     }
+  }
+
+  /// The polish (RelaxationParams::polishMarginDegrees): free vertices taken worst first, by
+  /// their ring's smallest angle, while it is under max(30 degrees, the first one's + margin);
+  /// each climbs (ascend, or along its curve) and, if it moved, it and its neighbours are taken
+  /// again. A vertex that cannot climb waits until a neighbour moves. Returns the vertices moved.
+  int polish(const std::vector<char>& fixed, const std::vector<Freedom>& freedom, double margin) {
+    using Item = std::pair<double, int>;  // (ring's smallest angle, vertex)
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    const int n = output_.vertexCount();
+    std::vector<double> queued(n, -1.0);  // the value v was last queued with; -1: not queued
+    const auto enqueue = [&](int u) {
+      if (fixed[u] || output_.valence(u) == 0) return;
+      queued[u] = ring(u, pos_[u], nullptr);
+      queue.push({queued[u], u});
+    };
+    for (int v = 0; v < n; ++v) enqueue(v);
+    if (anchor_.empty()) anchor_ = pos_;
+    const long maxMoves = long(kPolishMovesPerVertex) * n;
+    int moved = 0;
+    while (!queue.empty() && polishMoves_ < maxMoves) {
+      const auto [value, v] = queue.top();
+      queue.pop();
+      if (value != queued[v]) continue;  // queued again since, or waiting
+      queued[v] = -1.0;
+      if (polishAim_ < 0) polishAim_ = std::max(kSmallAngle, value + margin);
+      if (value >= polishAim_) break;
+      const int movesBefore = moves_;
+      bool climbed = false;  // by kPolishGain at least: its neighbours are taken again
+      if (freedom[v] == Freedom::Curve) {
+        relaxAlongCurve(v, true);
+        climbed = moves_ > movesBefore;
+      } else {
+        climbed = ascend(v) > 0;
+      }
+      if (!climbed) continue;
+      ++moved;
+      ++polishMoves_;
+      enqueue(v);
+      for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c)
+        enqueue(output_.vertex(TriMesh::next(*c)));
+    }
+    return moved;
+  }
+
+  /// An ascent step: a unit tangent direction and a length.
+  struct AscentStep {
+    Vec3 direction = Vec3::Zero();
+    double length = 0;
+  };
+
+  /// Steepest ascent of the smallest angle of v's ring, on the input. Each step: the direction
+  /// that raises every angle within a band of the smallest (the point of their gradients' convex
+  /// hull nearest the origin; none if the hull holds it), a length where the angles' linear
+  /// models say the smallest is largest, halved until the point projected on the input raises it
+  /// without adding a face under 30 degrees; the band is 1 degree, narrowed by 4 down to 0.01
+  /// while no step is found (angles near the smallest can pull apart). The point v started the
+  /// polish from must stay within maxDeviation of its fan (from 30 degrees up). Returns the gain.
+  double ascend(int v) {
+    const double ringLength = meanRingLength(v);
+    const double maxAway = maxDeviation_ * ringLength;
+    const double start = ring(v, pos_[v], nullptr);
+    for (int iteration = 0; iteration < kAscentIterations; ++iteration) {
+      const int face = walker_.faceOf(points_[v]);
+      const Vec3 normal = tangentNormal(v, face);
+      if (normal.isZero()) break;
+      const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
+      const double before = angleGradients(v, e1, e2, ringLength);
+      const double away = before >= kSmallAngle ? maxAway : std::numeric_limits<double>::infinity();
+      bool stepped = false;
+      for (double band = kActiveBand; band > kNarrowestBand && !stepped; band *= 0.25) {
+        const AscentStep step = ascentStep(before, band, e1, e2, ringLength);
+        if (step.length > 0) stepped = tryAscentStep(v, face, step, before, away, ringLength);
+        if (refusedLast_) return ring(v, pos_[v], nullptr) - start;  // the move would make faces cross
+      }
+      if (!stepped) break;
+    }
+    return ring(v, pos_[v], nullptr) - start;
+  }
+
+  /// Moves v along `step` (halving it until it raises the ring's smallest angle above `before`
+  /// without adding a face under 30 degrees); whether it moved.
+  bool tryAscentStep(int v, int face, const AscentStep& step, double before, double away, double ringLength) {
+    const Vec3 p = pos_[v];
+    const int under = ringFacesUnder30(v, p);
+    const int movesBefore = moves_;
+    for (double t = step.length; t > kSmallestStep * ringLength && moves_ == movesBefore; t *= 0.5) {
+      const SurfacePoint moved = walker_.project(p + t * step.direction, face);
+      const Vec3 q = walker_.pointOf(moved.face, moved.bary);
+      if (!(ring(v, q, nullptr) > before + kStepGain) || ringFacesUnder30(v, q) > under) continue;
+      if (fanDistance(v, q, anchor_[v]) > away) continue;
+      tryMoveTo(v, moved, before, away);
+      if (refusedLast_) return false;
+    }
+    return moves_ > movesBefore;
+  }
+
+  /// The angles of v's ring (angles_[0]) and their gradients in the tangent plane (e1, e2) by
+  /// finite differences (gradients_); returns the smallest.
+  double angleGradients(int v, const Vec3& e1, const Vec3& e2, double ringLength) {
+    const Vec3 p = pos_[v];
+    const double h = kGradientStep * ringLength;
+    ringAngles(v, p, angles_[0]);
+    ringAngles(v, p + h * e1, angles_[1]);
+    ringAngles(v, p + h * e2, angles_[2]);
+    gradients_.clear();
+    for (size_t i = 0; i < angles_[0].size(); ++i)
+      gradients_.emplace_back((angles_[1][i] - angles_[0][i]) / h, (angles_[2][i] - angles_[0][i]) / h);
+    return *std::min_element(angles_[0].begin(), angles_[0].end());
+  }
+
+  /// ascentStep's for the angles within `band` of the smallest, from the angles and gradients of
+  /// angleGradients; length 0 if no direction raises them.
+  AscentStep ascentStep(double smallest, double band, const Vec3& e1, const Vec3& e2, double ringLength) {
+    AscentStep step;
+    active_.clear();
+    for (size_t i = 0; i < angles_[0].size(); ++i)
+      if (angles_[0][i] < smallest + band) active_.push_back(gradients_[i]);
+    const Eigen::Vector2d d = nearestToOrigin(active_);
+    if (!(d.norm() > kStationary)) return step;
+    const Eigen::Vector2d u = d.normalized();
+    // The smallest of the angles' linear models along u is concave in the step: golden sections.
+    const auto model = [&](double t) {
+      double lowest = kPi;
+      for (size_t i = 0; i < angles_[0].size(); ++i)
+        lowest = std::min(lowest, angles_[0][i] + t * gradients_[i].dot(u));
+      return lowest;
+    };
+    double lo = 0, hi = kMaxPolishStep * ringLength;
+    for (int k = 0; k < kGoldenSections; ++k) {
+      const double t1 = lo + (1 - kGolden) * (hi - lo), t2 = lo + kGolden * (hi - lo);
+      if (model(t1) < model(t2))
+        lo = t1;
+      else
+        hi = t2;
+    }
+    step.direction = u[0] * e1 + u[1] * e2;
+    step.length = 0.5 * (lo + hi);
+    return step;
+  }
+
+  /// The point of the convex hull of the 2D vectors `g` nearest the origin (zero if the hull
+  /// holds it): a vector, or the foot on a segment between two, that no vector lies behind.
+  static Eigen::Vector2d nearestToOrigin(const std::vector<Eigen::Vector2d>& g) {
+    Eigen::Vector2d best = Eigen::Vector2d::Zero();
+    double bestNorm = std::numeric_limits<double>::infinity();
+    const auto consider = [&](const Eigen::Vector2d& d) {
+      const double n2 = d.squaredNorm();
+      if (n2 >= bestNorm) return;
+      for (const Eigen::Vector2d& x : g)
+        if (x.dot(d) < n2 * (1 - 1e-9)) return;
+      best = d;
+      bestNorm = n2;
+    };
+    for (size_t i = 0; i < g.size(); ++i) {
+      consider(g[i]);
+      for (size_t j = i + 1; j < g.size(); ++j) {
+        const Eigen::Vector2d e = g[j] - g[i];
+        const double t = e.squaredNorm() > 0 ? -g[i].dot(e) / e.squaredNorm() : 0.0;
+        if (t > 0 && t < 1) consider(g[i] + t * e);
+      }
+    }
+    return best;
+  }
+
+  /// The three angles of each face around v with v at x (radians), into `out`.
+  void ringAngles(int v, const Vec3& x, std::vector<double>& out) const {
+    out.clear();
+    const auto angle = [](const Vec3& u, const Vec3& w) { return std::atan2(u.cross(w).norm(), u.dot(w)); };
+    for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c) {
+      const Vec3& a = pos_[output_.vertex(TriMesh::next(*c))];
+      const Vec3& b = pos_[output_.vertex(TriMesh::prev(*c))];
+      out.push_back(angle(a - x, b - x));
+      out.push_back(angle(x - a, b - a));
+      out.push_back(angle(x - b, a - b));
+    }
+  }
+
+  /// The faces around v with v at x that have an angle under 30 degrees.
+  int ringFacesUnder30(int v, const Vec3& x) const {
+    int n = 0;
+    for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c)
+      n += smallestAngleCosine(x, pos_[output_.vertex(TriMesh::next(*c))], pos_[output_.vertex(TriMesh::prev(*c))]) >
+           kCos30;
+    return n;
+  }
+
+  /// Mean length of v's edges.
+  double meanRingLength(int v) const {
+    double length = 0;
+    for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c)
+      length += (pos_[output_.vertex(TriMesh::next(*c))] - pos_[v]).norm();
+    return length / output_.valence(v);
+  }
+
+  /// The normal of v's tangent plane: its output ring's, unless the ring is folded against the
+  /// input face it lies in (zero if that face is degenerate).
+  Vec3 tangentNormal(int v, int face) const {
+    const Vec3 normal = walker_.normal(face);
+    if (normal.isZero()) return normal;
+    Vec3 ringNormal = Vec3::Zero();
+    for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c)
+      ringNormal +=
+          (pos_[output_.vertex(TriMesh::next(*c))] - pos_[v]).cross(pos_[output_.vertex(TriMesh::prev(*c))] - pos_[v]);
+    return ringNormal.dot(normal) > 0.5 * ringNormal.norm() ? Vec3(ringNormal.normalized()) : normal;
+  }
+
+  int polishMoves() const { return polishMoves_; }
+
+  /// The polish's second part: each free vertex off the feature curves whose ring has faces under
+  /// 30 degrees moves to the point, of 16 directions at 4 lengths, where its ring has the fewest
+  /// (then the largest smallest angle), if fewer than now and its smallest angle stays at least
+  /// `floor` (the mesh's smallest: never lowered). No deviation limit, as for the relaxation's
+  /// steps under 30 degrees. Returns the vertices moved.
+  int fewerUnder30(const std::vector<char>& fixed, const std::vector<Freedom>& freedom, double floor) {
+    int moved = 0;
+    for (int v = 0; v < output_.vertexCount(); ++v) {
+      if (fixed[v] || freedom[v] != Freedom::Surface || output_.valence(v) == 0) continue;
+      const int under = ringFacesUnder30(v, pos_[v]);
+      if (under == 0) continue;
+      const int face = walker_.faceOf(points_[v]);
+      const Vec3 normal = tangentNormal(v, face);
+      if (normal.isZero()) continue;
+      const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
+      const double ringLength = meanRingLength(v);
+      const Vec3 p = pos_[v];
+      std::pair<int, double> best{under, -1.0};  // (faces under 30 degrees, smallest angle)
+      SurfacePoint to;
+      for (const double step : {0.3, 0.15, 0.075, 0.0375})
+        for (int k = 0; k < 16; ++k) {
+          const double turn = k * kPi / 8;
+          const SurfacePoint q =
+              walker_.project(p + step * ringLength * (std::cos(turn) * e1 + std::sin(turn) * e2), face);
+          const Vec3 x = walker_.pointOf(q.face, q.bary);
+          const std::pair<int, double> there{ringFacesUnder30(v, x), ring(v, x, nullptr)};
+          if (there.second < floor || there.first >= under) continue;
+          if (there.first < best.first || (there.first == best.first && there.second > best.second)) {
+            best = there;
+            to = q;
+          }
+        }
+      if (best.first == under) continue;
+      const int movesBefore = moves_;
+      tryMoveTo(v, to, floor, std::numeric_limits<double>::infinity(), floor);
+      moved += moves_ > movesBefore;
+    }
+    polishMoves_ += moved;
+    return moved;
   }
 
   int moves() const { return moves_; }
@@ -429,6 +691,26 @@ class Relaxer {
   static constexpr double kStepMargin = 3.0 * kDegree;
   double stepAim_ = kPi;                         ///< this round's: steps where the ring's smallest angle is under it
   static constexpr double kStepDeviation = 2.0;  ///< tangent steps' deviation limit, in maxDeviation
+
+  // The polish.
+  static constexpr double kPolishGain = 0.05 * kDegree;     ///< a move must raise the ring's smallest angle by this
+  static constexpr double kStepGain = 0.01 * kDegree;       ///< each ascent step must raise it by this
+  static constexpr int kPolishMovesPerVertex = 16;          ///< at most this many moves per vertex, on average
+  static constexpr int kAscentIterations = 16;              ///< ascent steps per vertex taken
+  static constexpr double kActiveBand = 1.0 * kDegree;      ///< angles this close to the smallest rise with it
+  static constexpr double kNarrowestBand = 0.01 * kDegree;  ///< ... or, near the top, this close
+  static constexpr double kMaxPolishStep = 0.3;             ///< longest ascent step, in ring lengths
+  static constexpr double kSmallestStep = 1e-3;             ///< shortest, in ring lengths
+  static constexpr double kGradientStep = 1e-5;             ///< finite differences' step, in ring lengths
+  static constexpr double kStationary = 1e-9;               ///< gradients under this: no ascent
+  static constexpr int kGoldenSections = 40;
+  static constexpr double kGolden = 0.6180339887498949;
+  static inline const double kCos30 = std::sqrt(3.0) / 2;
+  std::vector<Vec3> anchor_;  ///< positions when the polish began
+  double polishAim_ = -1;     ///< vertices are polished while their ring's smallest angle is under it
+  int polishMoves_ = 0;
+  std::array<std::vector<double>, 3> angles_;  ///< ascentStep's ring angles, here and a step along e1, e2
+  std::vector<Eigen::Vector2d> gradients_, active_;
 
   /// Distance from x to the faces around v with v at position p.
   double fanDistance(int v, const Vec3& p, const Vec3& x) const {
@@ -485,7 +767,8 @@ class Relaxer {
   }
 
   /// tryMove to a given point of the input.
-  double tryMoveTo(int v, const SurfacePoint& moved, double smallestBefore, double maxAway) {
+  double tryMoveTo(int v, const SurfacePoint& moved, double smallestBefore, double maxAway, double aim = -1) {
+    if (aim < 0) aim = aim_;
     refusedLast_ = false;
     const Vec3 q = walker_.pointOf(moved.face, moved.bary);
     const Vec3 normalThere = walker_.normal(moved.face);
@@ -496,7 +779,7 @@ class Relaxer {
     // A face may not turn over, unless it then faces the way the input does (an unfolding).
     for (size_t k = 0; k < after_.size(); ++k)
       if (!(after_[k].dot(before_[k]) > 0) && !(after_[k].dot(normalThere) > 0)) return smallestBefore;
-    if (smallest < std::min(smallestBefore, aim_)) return smallestBefore;
+    if (smallest < std::min(smallestBefore, aim)) return smallestBefore;
     // The point it leaves must stay close to the new fan: a vertex on a tip or a ridge keeps it.
     if (fanDistance(v, q, pos_[v]) > maxAway) return smallestBefore;
     const Vec3 from = pos_[v];
@@ -574,6 +857,18 @@ class Relaxer {
   bool refusedLast_ = false;  ///< the last tryMove was refused because faces would cross
 };
 
+/// Per vertex, 1 if it does not move: a corner of the feature curves, or on one while sliding is off.
+std::vector<char> fixedVertices(const std::vector<Freedom>& freedom, const RelaxationParams& params,
+                                RelaxationResult& r) {
+  std::vector<char> fixed(freedom.size(), 0);
+  for (size_t v = 0; v < freedom.size(); ++v) {
+    fixed[v] = freedom[v] == Freedom::None || (freedom[v] == Freedom::Curve && !params.slideAlongFeatures);
+    r.fixedVertices += fixed[v];
+    r.slidingVertices += !fixed[v] && freedom[v] == Freedom::Curve;
+  }
+  return fixed;
+}
+
 }  // namespace
 
 Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
@@ -589,12 +884,7 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
 
   const SurfaceWalker walker(input, params.featureAngleDegrees);
   const std::vector<Freedom> freedom = freedoms(output, points, walker);
-  std::vector<char> fixed(freedom.size(), 0);
-  for (size_t v = 0; v < freedom.size(); ++v) {
-    fixed[v] = freedom[v] == Freedom::None || (freedom[v] == Freedom::Curve && !params.slideAlongFeatures);
-    r.fixedVertices += fixed[v];
-    r.slidingVertices += !fixed[v] && freedom[v] == Freedom::Curve;
-  }
+  std::vector<char> fixed = fixedVertices(freedom, params, r);
   for (size_t v = 0; v < guard.pinned.size(); ++v) {
     r.pinnedVertices += guard.pinned[v] && !fixed[v];
     fixed[v] |= guard.pinned[v];
@@ -624,6 +914,43 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
   }
   r.moves = relaxer.moves();
   r.refusedCrossing = relaxer.refusedCrossing();
+  return r;
+}
+
+Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
+                                           const RelaxationParams& params, const std::vector<char>& pinned) {
+  RelaxationResult r;
+  if (Status s = checkRelaxationInput(output, points, input); !s) return s;
+  if (!pinned.empty() && static_cast<int>(pinned.size()) != output.vertexCount())
+    return invalidInput("polish: one pinned flag per output vertex is needed");
+  if (params.polishMarginDegrees < 0) return r;
+  const SurfaceWalker walker(input, params.featureAngleDegrees);
+  const std::vector<Freedom> freedom = freedoms(output, points, walker);
+  std::vector<char> fixed = fixedVertices(freedom, params, r);
+  for (size_t v = 0; v < pinned.size(); ++v) {
+    r.pinnedVertices += pinned[v] && !fixed[v];
+    fixed[v] |= pinned[v];
+  }
+  const std::vector<char> noneWatched;
+  Relaxer relaxer(output, points, input, walker, params.maxDeviation, kPi, noneWatched, params.density);
+  for (int pass = 0; pass < kPolishPasses; ++pass) {
+    const int moved = relaxer.polish(fixed, freedom, params.polishMarginDegrees * kDegree);
+    // The output is manifold, oriented and has faces (checked above), and moves keep that.
+    Expected<DelaunayFlipResult> flipped = flipToDelaunay(output, params.flips);
+    if (!flipped) return flipped.status();
+    r.flips += flipped->flips;
+    ++r.iterations;
+    if (moved == 0 || flipped->flips == 0) break;  // flips give the polish new rings
+  }
+  const double floor = smallestAngleOf(output);
+  for (int pass = 0; pass < kPolishPasses; ++pass) {
+    const int moved = relaxer.fewerUnder30(fixed, freedom, floor);
+    if (moved == 0) break;
+    Expected<DelaunayFlipResult> flipped = flipToDelaunay(output, params.flips);
+    if (!flipped) return flipped.status();
+    r.flips += flipped->flips;
+  }
+  r.moves = r.polishMoves = relaxer.polishMoves();
   return r;
 }
 

@@ -26,6 +26,8 @@
 // than maxDeviation (or than before). Vertices where three or more feature edges meet, one ends,
 // or the curve turns by more than the feature angle do not move; nor do output boundary vertices
 // the input's boundary does not hold.
+// A polish (polishOnSurface, below) then raises the smallest angles where they are: the worst
+// rings' vertices climb by steepest ascent of their smallest angle.
 // Connectivity changes only by the flips: vertices, components, genus and boundaries are kept, and
 // every vertex stays on the input surface (its SurfacePoint is updated).
 // Cost: O(iterations * F_out * (valence + walk length)); the input is read only where walks go.
@@ -68,6 +70,9 @@ struct RelaxationParams {
   /// diagonal; two speed zones 2x apart: density ratio 3.96 -> 4.47 (4 expected; the weights pull
   /// toward the dense zone at the interface).
   const std::vector<double>* density = nullptr;
+  /// The polish (polishOnSurface): the free vertices whose ring's smallest angle is under
+  /// max(30 degrees, the smallest of all + this margin) climb, worst first. Negative = off.
+  double polishMarginDegrees = 3.0;
   DelaunayFlipParams flips;  ///< the flips after each round
   /// After the Delaunay flips of each round, flips toward valence 6 (flipTowardValenceSix): evener
   /// angles, no longer Delaunay everywhere. Off by default; the remeshes' centroidal relaxation
@@ -100,7 +105,8 @@ struct RelaxationResult {
   int pinnedVertices = 0;   ///< of the others, those the caller pinned (RelaxationGuard)
   int watchedVertices = 0;  ///< and those it watched
   int refusedCrossing = 0;  ///< moves of watched vertices refused because faces would cross
-  int flips = 0;            ///< edges flipped over all rounds
+  int flips = 0;            ///< edges flipped over all rounds and the polish
+  int polishMoves = 0;      ///< moves of the polish (polishOnSurface)
 };
 
 /// Output vertices the caller constrains (each vector empty, or one flag per output vertex): the
@@ -119,5 +125,21 @@ struct RelaxationGuard {
 /// first: orientCoherently in mesh/orientation.h).
 Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
                                           const RelaxationParams& params = {}, const RelaxationGuard& guard = {});
+
+/// The polish of a relaxed output (RelaxationParams::polishMarginDegrees; the remeshes run it once
+/// on their final output): the free vertices whose ring's smallest angle is under max(30 degrees,
+/// the smallest of all + the margin) are taken worst first. Each climbs by steepest ascent of that
+/// angle (the direction that raises every angle near the smallest; along its curve for a vertex
+/// on a feature curve), by at least 0.05 degrees a step and never adding a face under 30 degrees,
+/// the point it started from kept within maxDeviation of its faces; a vertex is taken again when
+/// a neighbour moves. Then Delaunay flips, and again while both change something (3 times at
+/// most). Then each free vertex off the feature curves whose ring has faces under 30 degrees
+/// moves to where (of 16 directions at 4 lengths) its ring has the fewest, never below the
+/// mesh's smallest angle; with flips, up to 3 times. The smallest angle never falls and the
+/// faces under 30 degrees never grow in number.
+/// `pinned` (empty, or one flag per output vertex) holds vertices in place. Fails as
+/// relaxOnSurface, or with InvalidInput if `pinned` has the wrong size.
+Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
+                                           const RelaxationParams& params = {}, const std::vector<char>& pinned = {});
 
 }  // namespace gr

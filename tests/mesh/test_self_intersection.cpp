@@ -61,19 +61,48 @@ TEST(SelfIntersection, CoplanarFoldsAreFoundAsCgalFindsThem) {
   }
 }
 
-TEST(SelfIntersection, TwoSpheresThroughEachOtherAgreeWithCgal) {
+/// Two uv spheres of radius 1, one moved by (1, 0.1, 0.05): they pass through each other.
+TriMesh twoSpheresThroughEachOther() {
   TriMesh a = test::uvSphere(10, 20);
   std::vector<Vec3> p = a.positions;
   std::vector<Tri> t = a.triangles;
   const int n = static_cast<int>(p.size());
   for (const Vec3& x : a.positions) p.push_back(x + Vec3(1.0, 0.1, 0.05));
   for (const Tri& f : a.triangles) t.push_back({f[0] + n, f[1] + n, f[2] + n});
-  const TriMesh two = buildTriMesh(p, t).value();
+  return buildTriMesh(p, t).value();
+}
+
+TEST(SelfIntersection, TwoSpheresThroughEachOtherAgreeWithCgal) {
+  const TriMesh two = twoSpheresThroughEachOther();
   const auto exact = oracle::selfIntersections(two);
   ASSERT_TRUE(exact);
   EXPECT_GT(exact->size(), 0u);
   EXPECT_EQ(selfIntersectingFaces(two).size(), exact->size());
   EXPECT_EQ(selfIntersectingFaces(two, 3).size(), 3u);
+}
+
+// crossingsOfFaces finds exactly the pairs of the whole test that touch a flagged face, flags
+// spread or gathered, a few or all; none on an embedded mesh.
+TEST(SelfIntersection, CrossingsOfFlaggedFacesAreThoseOfTheWholeTest) {
+  const TriMesh two = twoSpheresThroughEachOther();
+  const std::vector<std::pair<int, int>> all = selfIntersectingFaces(two);
+  ASSERT_FALSE(all.empty());
+  for (const int every : {1, 2, 7, 50}) {
+    std::vector<char> flagged(two.faceCount(), 0);
+    for (int f = 0; f < two.faceCount(); f += every) flagged[f] = 1;
+    std::vector<std::pair<int, int>> expected;
+    for (const auto& [f, g] : all)
+      if (flagged[f] || flagged[g]) expected.push_back({f, g});
+    EXPECT_EQ(crossingsOfFaces(two, flagged), expected) << "every " << every << "th face flagged";
+  }
+  std::vector<char> one(two.faceCount(), 0);
+  one[all.front().first] = 1;
+  const std::vector<std::pair<int, int>> found = crossingsOfFaces(two, one);
+  EXPECT_FALSE(found.empty());
+  for (const auto& [f, g] : found) EXPECT_TRUE(f == all.front().first || g == all.front().first);
+  EXPECT_TRUE(crossingsOfFaces(two, std::vector<char>(two.faceCount(), 0)).empty());
+  const TriMesh sphere = test::uvSphere(12, 24);
+  EXPECT_TRUE(crossingsOfFaces(sphere, std::vector<char>(sphere.faceCount(), 1)).empty());
 }
 
 }  // namespace

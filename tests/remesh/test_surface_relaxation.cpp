@@ -191,6 +191,121 @@ TEST(SurfaceRelaxation, CreaseVerticesStayOnTheirCreasesAndCornersDoNotMove) {
   EXPECT_GE(smallestAngle(out), 25.0);
 }
 
+/// The smallest angle (degrees) of the fan of faces (c, ring[k], ring[k+1]) around a closed ring,
+/// or -1 if a face is turned over (clockwise in the plane z = 0); `under30` counts its faces with
+/// an angle under 30 degrees.
+double fanSmallestAngle(const Vec3& c, const std::vector<Vec3>& ring, int* under30 = nullptr) {
+  double smallest = 180;
+  if (under30) *under30 = 0;
+  for (size_t k = 0; k < ring.size(); ++k) {
+    const Vec3 tri[3] = {c, ring[k], ring[(k + 1) % ring.size()]};
+    if ((tri[1] - tri[0]).cross(tri[2] - tri[0]).z() <= 0) return -1;
+    double face = 180;
+    for (int i = 0; i < 3; ++i) {
+      const Vec3 u = tri[(i + 1) % 3] - tri[i], w = tri[(i + 2) % 3] - tri[i];
+      face = std::min(face, std::atan2(u.cross(w).norm(), u.dot(w)) * 180 / kPi);
+    }
+    smallest = std::min(smallest, face);
+    if (under30) *under30 += face < 30;
+  }
+  return smallest;
+}
+
+// The polish climbs to the top: one free vertex inside a fixed, stretched heptagon (an output
+// boundary that no input boundary holds) ends where its faces' smallest angle is within 0.05
+// degrees of the largest a brute-force search over the plane finds, from a start 0.1 off,
+// among the places with no more faces under 30 degrees than the start has (the polish's rule).
+TEST(SurfaceRelaxation, PolishReachesTheLargestSmallestAngleOfAFan) {
+  const int n = 200;
+  const TriMesh input = test::planeGrid(n, 1.0);  // vertex (i, j) at (i, j) / n
+  const auto vertexAt = [&](double x, double y) { return int(std::lround(y * n)) * (n + 1) + int(std::lround(x * n)); };
+  std::vector<int> ids = {vertexAt(0.6, 0.5)};  // the free vertex, off the centre
+  for (int k = 0; k < 7; ++k) {
+    const double a = 2 * kPi * k / 7 + 0.2 * std::sin(3.0 * k);
+    ids.push_back(vertexAt(0.5 + (0.3 + 0.04 * (k % 3)) * std::cos(a), 0.5 + 0.05 * std::sin(a)));
+  }
+  std::vector<Vec3> positions;
+  std::vector<SurfacePoint> points;
+  for (const int id : ids) {
+    positions.push_back(input.positions[id]);
+    points.push_back(SurfacePoint::atVertex(id));
+  }
+  std::vector<Tri> faces;
+  for (int k = 0; k < 7; ++k) faces.push_back({0, 1 + k, 1 + (k + 1) % 7});
+  TriMesh out = buildTriMesh(positions, faces).value();
+  const std::vector<Vec3> ring(positions.begin() + 1, positions.end());
+  // Brute force: a grid over the heptagon's box, then finer grids around the best point.
+  int startUnder30 = 0;
+  const double start = fanSmallestAngle(positions[0], ring, &startUnder30);
+  Vec3 best = positions[0];
+  double top = start, step = 0.002;
+  for (int level = 0; level < 4; ++level, step /= 10) {
+    const Vec3 centre = best;
+    const int half = level == 0 ? 200 : 20;
+    for (int i = -half; i <= half; ++i)
+      for (int j = -half; j <= half; ++j) {
+        const Vec3 c = centre + Vec3(i * step, j * step, 0);
+        int under30 = 0;
+        const double s = fanSmallestAngle(c, ring, &under30);
+        if (s > top && under30 <= startUnder30) top = s, best = c;
+      }
+  }
+  ASSERT_LT(start, top - 3.0) << "the start must be well below the top for the test to say anything";
+  ASSERT_LT(top, 30.0) << "under the polish's aim (30 degrees), so that it climbs to the top";
+  RelaxationParams params;
+  params.iterations = 0;             // the polish is independent of the rounds
+  params.flips.maxFlipsPerFace = 0;  // the fan stays a fan
+  const Expected<RelaxationResult> r = polishOnSurface(out, points, input, params);
+  ASSERT_TRUE(r) << r.status().message;
+  const double polished = fanSmallestAngle(out.positions[0], ring);
+  int polishedUnder30 = 0;
+  fanSmallestAngle(out.positions[0], ring, &polishedUnder30);
+  std::printf("fan: start %.3f deg (%d faces under 30), polished %.3f deg (%d), brute force %.3f deg, %d moves\n",
+              start, startUnder30, polished, polishedUnder30, top, r->polishMoves);
+  EXPECT_LE(polishedUnder30, startUnder30);
+  EXPECT_EQ(out.triangles, faces);
+  EXPECT_GE(polished, top - 0.05);
+  EXPECT_LE(polished, top + 1e-6);
+  EXPECT_GT(r->polishMoves, 0);
+  EXPECT_EQ(out.positions[0].z(), 0.0);
+  EXPECT_LT((points[0].position(input) - out.positions[0]).norm(), 1e-12);
+  for (int v = 1; v < 8; ++v) EXPECT_EQ(out.positions[v], positions[v]) << "ring vertex " << v << " moved";
+  params.polishMarginDegrees = -1;  // off
+  TriMesh again = buildTriMesh(positions, faces).value();
+  std::vector<SurfacePoint> samePoints = points;
+  ASSERT_TRUE(polishOnSurface(again, samePoints, input, params));
+  EXPECT_EQ(again.positions, positions);
+}
+
+// The polish never lowers the smallest angle nor adds a face under 30 degrees, keeps the topology
+// and the vertices on the input: a relaxed remesh of the plane polished again.
+TEST(SurfaceRelaxation, PolishNeverLowersTheSmallestAngleNorAddsFacesUnder30) {
+  for (const unsigned seed : {3u, 5u, 7u}) {
+    const TriMesh input = test::planeGrid(60, 1.0, 0.3, seed);
+    const DelaunayResult d = triangulate(input, 200);
+    TriMesh out = d.mesh;
+    std::vector<SurfacePoint> points = d.origin;
+    RelaxationParams params;
+    params.iterations = 1;
+    ASSERT_TRUE(relaxOnSurface(out, points, input, params));
+    const AngleStatistics before = angleStatistics(out);
+    const double smallestBefore = smallestAngle(out);
+    const Expected<RelaxationResult> r = polishOnSurface(out, points, input, params);
+    ASSERT_TRUE(r) << r.status().message;
+    const AngleStatistics after = angleStatistics(out);
+    std::printf("seed %u: smallest %.2f -> %.2f deg, under 30: %.2f -> %.2f %%, %d moves\n", seed, smallestBefore,
+                smallestAngle(out), 100 * before.shareMinBelow30, 100 * after.shareMinBelow30, r->polishMoves);
+    EXPECT_GE(smallestAngle(out), smallestBefore - 1e-9);
+    EXPECT_LE(after.shareMinBelow30, before.shareMinBelow30);
+    EXPECT_GT(r->polishMoves, 0);
+    expectSameTopology(d, out);
+    for (int v = 0; v < out.vertexCount(); ++v) {
+      EXPECT_EQ(out.positions[v].z(), 0.0);
+      EXPECT_LT((points[v].position(input) - out.positions[v]).norm(), 1e-12);
+    }
+  }
+}
+
 TEST(SurfaceRelaxation, ZeroIterationsChangeNothing) {
   const TriMesh input = test::planeGrid(30, 1.0, 0.3, 3);
   const DelaunayResult d = triangulate(input, 80);

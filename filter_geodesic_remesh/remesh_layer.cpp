@@ -43,6 +43,10 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
       (r.collapsedVertices > 0
            ? ", " + count(r.collapsedVertices) + " removed by edge collapses to reach the count asked for"
            : std::string()) +
+      (r.removedEars > 0 ? ", " + count(r.removedEars) +
+                               " removed with flat ears off the boundary (a triangle with two boundary edges and an "
+                               "angle under 30 deg, its tip near its base, which the boundary then follows)"
+                         : std::string()) +
       "; covering radius " + formatNumber(r.coveringRadius, "%.4g") +
       (commit.weighted ? " (a travel time: distance over speed)" : std::string()) +
       (r.flippedEdges > 0 ? "; " + count(r.flippedEdges) + " edges flipped to Delaunay" : std::string()));

@@ -204,18 +204,18 @@ class CollapsePass {
   std::vector<char> touched_, onBoundary_;
 };
 
-/// Removes the collapsed vertices and faces: compacts `mesh`'s arrays, `origin` and `weight`, and
+/// Removes the collapsed vertices (onto[v] >= 0) and the faces not alive: compacts `mesh`'s arrays, `origin` and `weight`, and
 /// renumbers `cell` (a removed vertex's cell goes to the vertex it went onto). False, with nothing
 /// changed, if the result is not a valid mesh (the checks of each collapse should make that
 /// impossible).
-bool compact(TriMesh& mesh, const CollapsePass& pass, std::vector<SurfacePoint>& origin, std::vector<double>& weight,
-             std::vector<int>& cell) {
+bool compact(TriMesh& mesh, const std::vector<int>& onto, const std::vector<char>& faceAlive,
+             std::vector<SurfacePoint>& origin, std::vector<double>& weight, std::vector<int>& cell) {
   std::vector<int> index(mesh.vertexCount(), -1);
   std::vector<Vec3> positions;
   std::vector<SurfacePoint> keptOrigin;
   std::vector<double> keptWeight;
   for (int v = 0; v < mesh.vertexCount(); ++v) {
-    if (pass.onto[v] >= 0) continue;
+    if (onto[v] >= 0) continue;
     index[v] = static_cast<int>(positions.size());
     positions.push_back(mesh.positions[v]);
     keptOrigin.push_back(origin[v]);
@@ -223,7 +223,7 @@ bool compact(TriMesh& mesh, const CollapsePass& pass, std::vector<SurfacePoint>&
   }
   std::vector<Tri> triangles;
   for (int f = 0; f < mesh.faceCount(); ++f) {
-    if (!pass.faceAlive[f]) continue;
+    if (!faceAlive[f]) continue;
     const Tri& t = mesh.triangles[f];
     triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
   }
@@ -231,7 +231,7 @@ bool compact(TriMesh& mesh, const CollapsePass& pass, std::vector<SurfacePoint>&
   if (!rebuilt || !rebuilt->topology.isManifold()) return false;
   for (int& c : cell) {
     if (c < 0 || c >= static_cast<int>(index.size())) continue;
-    while (pass.onto[c] >= 0) c = pass.onto[c];
+    while (onto[c] >= 0) c = onto[c];
     c = index[c];
   }
   mesh = std::move(rebuilt).value();
@@ -248,7 +248,7 @@ bool collapsePass(TriMesh& mesh, std::vector<SurfacePoint>& origin, std::vector<
   CollapsePass pass(work, weight);
   const int done = pass.run(excess, faces);
   ++r.passes;
-  if (done == 0 || !compact(work, pass, origin, weight, cell)) return false;
+  if (done == 0 || !compact(work, pass.onto, pass.faceAlive, origin, weight, cell)) return false;
   mesh = std::move(work);
   r.collapsed += done;
   return true;
@@ -273,6 +273,59 @@ CollapseResult collapseCrossingFaces(TriMesh& mesh, std::vector<SurfacePoint>& o
     std::vector<char> crossing(mesh.faceCount(), 0);
     for (const auto& [f, g] : pairs) crossing[f] = crossing[g] = 1;
     if (!collapsePass(mesh, origin, weight, cell, static_cast<int>(2 * pairs.size()), &crossing, r)) break;
+  }
+  return r;
+}
+
+namespace {
+
+/// The ears removeFlatEars takes in one round: per vertex, the vertex it goes onto (or -1), and
+/// per face, 0 for an ear; false if there is none. Ears that share a vertex wait for a later round.
+bool markFlatEars(const TriMesh& mesh, double maxHeight, std::vector<int>& onto, std::vector<char>& faceAlive) {
+  onto.assign(mesh.vertexCount(), -1);
+  faceAlive.assign(mesh.faceCount(), 1);
+  std::vector<char> touched(mesh.vertexCount(), 0);
+  bool any = false;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    int interior = -1, boundaryEdges = 0;
+    for (int k = 0; k < 3; ++k) {
+      if (mesh.oppositeCorner[3 * f + k] < 0)
+        ++boundaryEdges;
+      else
+        interior = 3 * f + k;
+    }
+    if (boundaryEdges != 2) continue;
+    const int m = mesh.vertex(interior), a = mesh.vertex(TriMesh::next(interior)),
+              b = mesh.vertex(TriMesh::prev(interior));
+    if (mesh.valence(m) != 1 || touched[m] || touched[a] || touched[b]) continue;
+    const Vec3 &pm = mesh.positions[m], &pa = mesh.positions[a], &pb = mesh.positions[b];
+    const double base = (pb - pa).norm();
+    const double height = (pa - pm).cross(pb - pm).norm() / base;
+    const auto angle = [](const Vec3& u, const Vec3& w) { return std::atan2(u.cross(w).norm(), u.dot(w)); };
+    const double smallest = std::min(angle(pm - pa, pb - pa), angle(pm - pb, pa - pb));
+    if (!(base > 0) || !(smallest < kEarAngle) || !(height <= maxHeight * base)) continue;
+    onto[m] = (pm - pa).squaredNorm() <= (pm - pb).squaredNorm() ? a : b;
+    faceAlive[f] = 0;
+    touched[m] = touched[a] = touched[b] = 1;
+    any = true;
+  }
+  return any;
+}
+
+}  // namespace
+
+CollapseResult removeFlatEars(TriMesh& mesh, std::vector<SurfacePoint>& origin, std::vector<int>& cell,
+                              double maxHeight) {
+  CollapseResult r;
+  std::vector<int> onto;
+  std::vector<char> faceAlive;
+  std::vector<double> weight;
+  for (int round = 0; round < kEarRounds && markFlatEars(mesh, maxHeight, onto, faceAlive); ++round) {
+    const int removed = static_cast<int>(std::count_if(onto.begin(), onto.end(), [](int v) { return v >= 0; }));
+    weight.assign(mesh.vertexCount(), 1.0);
+    if (removed >= mesh.vertexCount() - 2 || !compact(mesh, onto, faceAlive, origin, weight, cell)) break;
+    r.collapsed += removed;
+    ++r.passes;
   }
   return r;
 }

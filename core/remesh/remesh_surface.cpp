@@ -404,7 +404,8 @@ Expected<SampledDual> sampleToCount(FastMarcher& marcher, const FrontSurface& fr
 Status measureOutput(const TriMesh& input, bool distances, SurfaceRemeshResult& r, Progress progress) {
   r.measures.angles = angleStatistics(r.mesh);
   if (!distances) return Status::ok();
-  const RemeshDistances d = remeshDistances(input, r.mesh, r.cell, r.origin, r.collapsedVertices == 0);
+  const RemeshDistances d =
+      remeshDistances(input, r.mesh, r.cell, r.origin, r.collapsedVertices == 0 && r.removedEars == 0);
   r.measures.toInput = d.toInput;
   r.measures.fromInput = d.fromInput;
   r.measures.inputDiagonal = input.boundingBoxDiagonal();
@@ -662,6 +663,16 @@ std::vector<char> changedFaces(const TriMesh& before, const TriMesh& after) {
   return changed;
 }
 
+/// Flat ears off the final output's boundary (removeFlatEars), where the relaxation runs. Removing
+/// faces makes none cross: an output without crossing faces is one with fewer vertices.
+void removeEars(const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
+  if (params.relaxation.iterations <= 0 || r.looksLikeTriangleSoup) return;
+  const double height = RelaxationParams::kEarHeight * params.relaxation.maxDeviation;
+  r.removedEars = removeFlatEars(r.mesh, r.origin, r.cell, height).collapsed;
+  if (r.removedEars > 0 && r.crossingPairs == 0 && r.fewestCount > 0)
+    r.fewestCount = std::min(r.fewestCount, r.mesh.vertexCount());
+}
+
 /// The final output polished (polishOnSurface) on the oriented input. A polish that makes more
 /// of its faces cross is done again with the corners of the crossing faces and their neighbours
 /// pinned, up to kPolishPinRounds times, else not kept. Only after the rescues: their choices
@@ -735,6 +746,7 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   Expected<SurfaceRemeshResult> r = remeshOnce(input, metric, p, remeshShare, progress);
   if (!r) return r.status();
   if (Status s = rescueAngles(input, metric, p, remeshShare, progress, *r); !s) return s;
+  removeEars(p, *r);
   polishOutput(input, p, *r);
   if (Status s = keepInputIfSmaller(input, *r); !s) return s;
   auto clock = std::chrono::steady_clock::now();

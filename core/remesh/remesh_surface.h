@@ -169,8 +169,9 @@ struct SurfaceRemeshResult {
   int droppedSamples = 0;       ///< samples inside faces left out (nearest to no vertex)
   /// Vertices removed by edge collapses (edge_collapse.h) to bring an output the count search left
   /// above the count asked for down to it: mesh.vertexCount() = sampledAsked + addedSamples -
-  /// droppedSamples - collapsedVertices.
+  /// droppedSamples - collapsedVertices - removedEars.
   int collapsedVertices = 0;
+  int removedEars = 0;  ///< flat ears removed off the boundary, each with its tip (removeFlatEars)
   int repairRounds = 0;
   /// Of repairRounds, those that added samples where output triangles crossed each other
   /// (DelaunayParams::maxCrossingRounds).

@@ -95,6 +95,10 @@ struct RelaxationParams {
     return p;
   }
   static constexpr double kRegularMaxDeviation = 0.1;
+  /// The remeshes remove flat ears off their boundary (removeFlatEars in edge_collapse.h) whose
+  /// tip lies within this times maxDeviation times their base of it: the deviation the tangent
+  /// steps allow.
+  static constexpr double kEarHeight = 2.0;
 };
 
 struct RelaxationResult {

@@ -112,7 +112,8 @@ void expectTheCountAskedFor(const std::string& name, double fraction, bool adapt
               name.c_str(), adaptive ? "adaptive" : "uniform ", 100 * fraction, target, r.mesh.vertexCount(),
               r.addedSamples, r.collapsedVertices, after->size(), before->size());
   EXPECT_LE(r.mesh.vertexCount(), 1.1 * target);
-  EXPECT_EQ(r.mesh.vertexCount(), r.sampledAsked + r.addedSamples - r.droppedSamples - r.collapsedVertices);
+  EXPECT_EQ(r.mesh.vertexCount(),
+            r.sampledAsked + r.addedSamples - r.droppedSamples - r.collapsedVertices - r.removedEars);
   expectSameTopology(test::recount(r.mesh.triangles, r.mesh.vertexCount()),
                      test::recount(input.triangles, input.vertexCount()));
   EXPECT_LE(after->size(), before->size());
@@ -148,6 +149,37 @@ TEST(EdgeCollapse, CrossingFacesTheRepairLeftAreCollapsed) {
   EXPECT_LE(r->remesh.mesh.vertexCount(), 1.1 * params.remesh.sampling.targetCount);
   expectSameTopology(test::recount(r->remesh.mesh.triangles, r->remesh.mesh.vertexCount()),
                      test::recount(input.triangles, input.vertexCount()));
+}
+
+// removeFlatEars: an ear with an angle under 30 degrees whose tip is within maxHeight times its
+// base of the base goes with its tip; a fat ear and a tall thin one stay. The topology is
+// recounted, the cells follow the vertex the tip went onto.
+TEST(FlatEars, FlatEarsGoFatOrTallOnesStay) {
+  // a (0), b (1), c (2) and the ear's tip m (3) below the edge (a, b).
+  for (const auto& [tip, goes] : std::vector<std::pair<Vec3, bool>>{
+           {Vec3(0.4, -0.02, 0), true}, {Vec3(0.5, -0.4, 0), false}, {Vec3(0.9, -0.2, 0), false}}) {
+    TriMesh mesh = buildTriMesh({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 0.8, 0), tip}, {{0, 3, 1}, {0, 1, 2}}).value();
+    std::vector<SurfacePoint> origin;
+    for (int v = 0; v < 4; ++v) origin.push_back(SurfacePoint::atVertex(10 + v));
+    std::vector<int> cell = {0, 1, 2, 3, -1};
+    const CollapseResult r = removeFlatEars(mesh, origin, cell, 0.1);
+    const test::Recount after = test::recount(mesh.triangles, mesh.vertexCount());
+    EXPECT_EQ(after.components, 1);
+    EXPECT_EQ(after.boundaryLoops, 1);
+    EXPECT_TRUE(after.manifoldEdges && after.manifoldVertices && after.oriented);
+    if (goes) {
+      EXPECT_EQ(r.collapsed, 1);
+      ASSERT_EQ(mesh.vertexCount(), 3);
+      ASSERT_EQ(mesh.faceCount(), 1);
+      EXPECT_EQ(origin.size(), 3u);
+      EXPECT_EQ(origin[2].vertex, 12);
+      EXPECT_EQ(cell, (std::vector<int>{0, 1, 2, 0, -1}));  // the tip's cell joins a, the nearer
+    } else {
+      EXPECT_EQ(r.collapsed, 0) << tip.transpose();
+      EXPECT_EQ(mesh.faceCount(), 2);
+      EXPECT_EQ(cell, (std::vector<int>{0, 1, 2, 3, -1}));
+    }
+  }
 }
 
 }  // namespace

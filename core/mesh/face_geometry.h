@@ -17,6 +17,12 @@ inline Vec3 areaNormal(const TriMesh& mesh, const Tri& t) {
 }
 inline Vec3 areaNormal(const TriMesh& mesh, int face) { return areaNormal(mesh, mesh.triangles[face]); }
 
+/// Angle at p of the triangle (p, q, r), in radians (atan2: accurate near 0 and 180 degrees).
+inline double angleAt(const Vec3& p, const Vec3& q, const Vec3& r) {
+  const Vec3 u = q - p, w = r - p;
+  return std::atan2(u.cross(w).norm(), u.dot(w));
+}
+
 /// Per face, its unit normal (zero for a face of no area).
 inline std::vector<Vec3> unitFaceNormals(const TriMesh& mesh) {
   std::vector<Vec3> normal(mesh.faceCount());

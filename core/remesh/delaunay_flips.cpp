@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/base/math.h"
+#include "core/mesh/face_geometry.h"
 
 namespace gr {
 namespace {
@@ -26,12 +27,6 @@ bool isNeighbour(const TriMesh& m, int corner, int y) {
     }
   }
   return false;
-}
-
-/// Angle at p of the triangle (p, q, r), in radians.
-double angleAt(const Vec3& p, const Vec3& q, const Vec3& r) {
-  const Vec3 u = q - p, w = r - p;
-  return std::atan2(u.cross(w).norm(), u.dot(w));
 }
 
 /// A face with an angle over this is a cap: its normal says little (which side of the line through

@@ -301,8 +301,7 @@ bool markFlatEars(const TriMesh& mesh, double maxHeight, std::vector<int>& onto,
     const Vec3 &pm = mesh.positions[m], &pa = mesh.positions[a], &pb = mesh.positions[b];
     const double base = (pb - pa).norm();
     const double height = (pa - pm).cross(pb - pm).norm() / base;
-    const auto angle = [](const Vec3& u, const Vec3& w) { return std::atan2(u.cross(w).norm(), u.dot(w)); };
-    const double smallest = std::min(angle(pm - pa, pb - pa), angle(pm - pb, pa - pb));
+    const double smallest = std::min(angleAt(pa, pm, pb), angleAt(pb, pa, pm));
     if (!(base > 0) || !(smallest < kEarAngle) || !(height <= maxHeight * base)) continue;
     onto[m] = (pm - pa).squaredNorm() <= (pm - pb).squaredNorm() ? a : b;
     faceAlive[f] = 0;

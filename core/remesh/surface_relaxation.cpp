@@ -358,27 +358,21 @@ class Relaxer {
   /// smallest angle of its ring; then tries steps in eight tangent directions that raise it.
   void relaxVertex(int v) {
     const Vec3 p = pos_[v];
-    Vec3 centre = Vec3::Zero(), ringNormal = Vec3::Zero();
-    double ringLength = 0, weights = 0;
+    Vec3 centre = Vec3::Zero();
+    double weights = 0;
     for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c) {
       const int n = output_.vertex(TriMesh::next(*c));
-      const Vec3& a = pos_[n];
-      const Vec3& b = pos_[output_.vertex(TriMesh::prev(*c))];
       const double w = density_ ? interpolate(input_, points_[n], *density_) : 1.0;
-      centre += w * a;  // each neighbour once: it is `next` in exactly one face of a closed fan
+      centre += w * pos_[n];  // each neighbour once: it is `next` in exactly one face of a closed fan
       weights += w;
-      ringNormal += (a - p).cross(b - p);
-      ringLength += (a - p).norm();
     }
     if (!(weights > 0.0)) return;
     centre /= weights;
-    ringLength /= output_.valence(v);
+    const double ringLength = meanRingLength(v);
     const double maxAway = maxDeviation_ * ringLength;
-    // The tangent plane: the output ring's, unless the ring is folded against the input.
     const int face = walker_.faceOf(points_[v]);
-    Vec3 normal = walker_.normal(face);
+    const Vec3 normal = tangentNormal(v, face);
     if (normal.isZero()) return;
-    if (ringNormal.dot(normal) > 0.5 * ringNormal.norm()) normal = ringNormal.normalized();
     Vec3 move = centre - p;
     move -= normal * normal.dot(move);
     const double before = ring(v, p, nullptr);
@@ -403,10 +397,7 @@ class Relaxer {
     const double before = ring(v, pos_[v], nullptr);
     if (!polishing && before >= std::min(aim_, stepAim_)) return;
     const int under = polishing ? ringFacesUnder30(v, pos_[v]) : 0;
-    double ringLength = 0;
-    for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c)
-      ringLength += (pos_[output_.vertex(TriMesh::next(*c))] - pos_[v]).norm();
-    ringLength /= output_.valence(v);
+    const double ringLength = meanRingLength(v);
     std::vector<std::pair<double, SurfacePoint>> better;  // (smallest angle there, point), best first
     for (const double step : {0.4, 0.2, 0.1, 0.05, 0.025, 0.0125}) {
       if (!polishing && step < 0.05) break;
@@ -457,7 +448,7 @@ class Relaxer {
       if (polishAim_ < 0) polishAim_ = std::max(kSmallAngle, value + margin);
       if (value >= polishAim_) break;
       const int movesBefore = moves_;
-      bool climbed = false;  // by kPolishGain at least: its neighbours are taken again
+      bool climbed = false;  // then it and its neighbours are taken again
       if (freedom[v] == Freedom::Curve) {
         relaxAlongCurve(v, true);
         climbed = moves_ > movesBefore;
@@ -597,13 +588,12 @@ class Relaxer {
   /// The three angles of each face around v with v at x (radians), into `out`.
   void ringAngles(int v, const Vec3& x, std::vector<double>& out) const {
     out.clear();
-    const auto angle = [](const Vec3& u, const Vec3& w) { return std::atan2(u.cross(w).norm(), u.dot(w)); };
     for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c) {
       const Vec3& a = pos_[output_.vertex(TriMesh::next(*c))];
       const Vec3& b = pos_[output_.vertex(TriMesh::prev(*c))];
-      out.push_back(angle(a - x, b - x));
-      out.push_back(angle(x - a, b - a));
-      out.push_back(angle(x - b, a - b));
+      out.push_back(angleAt(x, a, b));
+      out.push_back(angleAt(a, x, b));
+      out.push_back(angleAt(b, x, a));
     }
   }
 

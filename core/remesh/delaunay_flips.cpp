@@ -169,6 +169,30 @@ void flipEdge(TriMesh& mesh, int c, int o) {
   link(g0 + 2, oYB);     // x faces y->b
 }
 
+/// Up to `passes` sweeps over the interior edges, in corner order, flipping each edge (facing
+/// corner c, o on the other side, as faces (x, a, b) and (y, b, a)) for which wanted(c, o, x, a,
+/// b, y) holds, until a sweep flips none; then the vertex lists are rebuilt. Returns the flips.
+template <class Wanted>
+int sweepFlips(TriMesh& mesh, int passes, Wanted wanted) {
+  const std::vector<int>& opp = mesh.oppositeCorner;
+  const auto V = [&](int k) { return mesh.triangles[k / 3][k % 3]; };
+  int total = 0;
+  for (int pass = 0; pass < passes; ++pass) {
+    int flips = 0;
+    for (int c = 0; c < 3 * mesh.faceCount(); ++c) {
+      const int o = opp[c];
+      if (o < c) continue;  // each interior edge once (o < 0: boundary)
+      if (!wanted(c, o, V(c), V(TriMesh::next(c)), V(TriMesh::prev(c)), V(o))) continue;
+      flipEdge(mesh, c, o);
+      ++flips;
+    }
+    total += flips;
+    if (flips == 0) break;
+  }
+  if (total > 0) rebuildVertexCorners(mesh);
+  return total;
+}
+
 }  // namespace
 
 Expected<DelaunayFlipResult> flipToDelaunay(TriMesh& mesh, const DelaunayFlipParams& params) {
@@ -197,7 +221,6 @@ Expected<DelaunayFlipResult> flipToDelaunay(TriMesh& mesh, const DelaunayFlipPar
 
 Expected<DelaunayFlipResult> flipTowardValenceSix(TriMesh& mesh, const ValenceFlipParams& params) {
   if (Status s = checkFlipInput(mesh); !s) return s;
-  DelaunayFlipResult r;
   const std::vector<int>& opp = mesh.oppositeCorner;
   const int nv = mesh.vertexCount();
   std::vector<int> valence(nv, 0), target(nv, 6);
@@ -212,31 +235,47 @@ Expected<DelaunayFlipResult> flipTowardValenceSix(TriMesh& mesh, const ValenceFl
   };
   const double cosFeature = std::cos(params.featureAngleDegrees * kPi / 180.0);
   const double minAngle = params.minAngleDegrees * kPi / 180.0;
-  const auto V = [&](int k) { return mesh.triangles[k / 3][k % 3]; };
-  for (int pass = 0; pass < params.passes; ++pass) {
-    int flips = 0;
-    for (int c = 0; c < 3 * mesh.faceCount(); ++c) {
-      const int o = opp[c];
-      if (o < c) continue;  // each interior edge once (o < 0: boundary)
-      const int x = V(c), a = V(TriMesh::next(c)), b = V(TriMesh::prev(c)), y = V(o);
-      if (valence[a] <= 3 || valence[b] <= 3) continue;
-      if (excess(a, -1) + excess(b, -1) + excess(x, 1) + excess(y, 1) >=
-          excess(a, 0) + excess(b, 0) + excess(x, 0) + excess(y, 0))
-        continue;
-      const std::vector<Vec3>& pos = mesh.positions;
-      if (smallestAngleAfterFlip(pos[x], pos[a], pos[b], pos[y]) < minAngle) continue;
-      if (!flipKeepsSurface(mesh, c, o, cosFeature, false)) continue;
-      flipEdge(mesh, c, o);
-      --valence[a];
-      --valence[b];
-      ++valence[x];
-      ++valence[y];
-      ++flips;
-    }
-    r.flips += flips;
-    if (flips == 0) break;
-  }
-  if (r.flips > 0) rebuildVertexCorners(mesh);
+  const std::vector<Vec3>& pos = mesh.positions;
+  DelaunayFlipResult r;
+  r.flips = sweepFlips(mesh, params.passes, [&](int c, int o, int x, int a, int b, int y) {
+    if (valence[a] <= 3 || valence[b] <= 3) return false;
+    if (excess(a, -1) + excess(b, -1) + excess(x, 1) + excess(y, 1) >=
+        excess(a, 0) + excess(b, 0) + excess(x, 0) + excess(y, 0))
+      return false;
+    if (smallestAngleAfterFlip(pos[x], pos[a], pos[b], pos[y]) < minAngle) return false;
+    if (!flipKeepsSurface(mesh, c, o, cosFeature, false)) return false;
+    --valence[a];
+    --valence[b];
+    ++valence[x];
+    ++valence[y];
+    return true;
+  });
+  return r;
+}
+
+Expected<DelaunayFlipResult> flipToBetterAngles(TriMesh& mesh, const AngleFlipParams& params) {
+  if (Status s = checkFlipInput(mesh); !s) return s;
+  const double cosFeature = std::cos(params.featureAngleDegrees * kPi / 180.0);
+  const double minAngle = params.minAngleDegrees * kPi / 180.0;
+  constexpr double k30 = kPi / 6, kRise = 1e-6;
+  const std::vector<Vec3>& pos = mesh.positions;
+  const auto smallest = [&](int p, int q, int s) {
+    return std::min(
+        {angleAt(pos[p], pos[q], pos[s]), angleAt(pos[q], pos[s], pos[p]), angleAt(pos[s], pos[p], pos[q])});
+  };
+  DelaunayFlipResult r;
+  r.flips = sweepFlips(mesh, params.passes, [&](int c, int o, int x, int a, int b, int y) {
+    if (x == y) return false;
+    // Faces (x, a, b), (y, b, a) now; (x, a, y), (y, b, x) after.
+    const double f = smallest(x, a, b), g = smallest(y, b, a);
+    const int under = (f < k30) + (g < k30);
+    if (under == 0) return false;
+    const double f2 = smallest(x, a, y), g2 = smallest(y, b, x);
+    const int underAfter = (f2 < k30) + (g2 < k30);
+    if (std::min(f2, g2) < minAngle) return false;
+    if (underAfter > under || (underAfter == under && std::min(f2, g2) <= std::min(f, g) + kRise)) return false;
+    return flipKeepsSurface(mesh, c, o, cosFeature, false);
+  });
   return r;
 }
 

@@ -60,4 +60,18 @@ struct ValenceFlipParams {
 };
 Expected<DelaunayFlipResult> flipTowardValenceSix(TriMesh& mesh, const ValenceFlipParams& params = {});
 
+/// Flips toward better angles (the polish, surface_relaxation.h): an interior edge (a, b) becomes
+/// (x, y) when fewer of the two faces have an angle under 30 degrees after, or as many and their
+/// smallest angle rises, keeping the surface (the crease and orientation checks above) and leaving
+/// no angle of the new faces under minAngleDegrees. The smallest angle of the mesh never falls
+/// below minAngleDegrees and the faces under 30 degrees never grow in number. Delaunay flips
+/// maximise the pair's smallest angle in the plane only, and may leave two faces of 28 degrees
+/// where the other diagonal gives one of 25 and one of 35. Fails as above.
+struct AngleFlipParams {
+  double minAngleDegrees = 0.0;       ///< no new face with a smaller angle (the mesh's smallest: never lowered)
+  double featureAngleDegrees = 30.0;  ///< as DelaunayFlipParams::featureAngleDegrees
+  int passes = 5;                     ///< sweeps over the edges at most
+};
+Expected<DelaunayFlipResult> flipToBetterAngles(TriMesh& mesh, const AngleFlipParams& params = {});
+
 }  // namespace gr

@@ -847,6 +847,24 @@ class Relaxer {
   bool refusedLast_ = false;  ///< the last tryMove was refused because faces would cross
 };
 
+/// Flips toward fewer faces under 30 degrees (flipToBetterAngles), all undone if they make faces
+/// cross: flips across creases of up to the feature angle can fold a thin part onto itself.
+/// Returns the flips kept.
+Expected<int> flipWithoutCrossing(TriMesh& output, const AngleFlipParams& params) {
+  const std::vector<Tri> before = output.triangles;
+  const std::vector<int> opposite = output.oppositeCorner;
+  const Expected<DelaunayFlipResult> flipped = flipToBetterAngles(output, params);
+  if (!flipped) return flipped.status();
+  if (flipped->flips == 0) return 0;
+  std::vector<char> changed(output.faceCount());
+  for (int f = 0; f < output.faceCount(); ++f) changed[f] = output.triangles[f] != before[f];
+  if (crossingsOfFaces(output, changed).empty()) return flipped->flips;
+  output.triangles = before;
+  output.oppositeCorner = opposite;
+  rebuildVertexCorners(output);
+  return 0;
+}
+
 /// Per vertex, 1 if it does not move: a corner of the feature curves, or on one while sliding is off.
 std::vector<char> fixedVertices(const std::vector<Freedom>& freedom, const RelaxationParams& params,
                                 RelaxationResult& r) {
@@ -933,12 +951,19 @@ Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfaceP
     if (moved == 0 || flipped->flips == 0) break;  // flips give the polish new rings
   }
   const double floor = smallestAngleOf(output);
+  // Flips across creases up to the input's feature angle: the coarse outputs of thin parts
+  // (knot2 at 5%: a tube a few vertices round) have edges of 50 degrees where a Delaunay flip's
+  // 30 would hold the face under 30 degrees; input creases sharper than that stay edges.
+  AngleFlipParams under30;
+  under30.minAngleDegrees = floor / kDegree;
+  under30.featureAngleDegrees = std::max(params.flips.featureAngleDegrees, params.featureAngleDegrees);
+  if (params.flips.maxFlipsPerFace <= 0) under30.passes = 0;  // no flips asked for
   for (int pass = 0; pass < kPolishPasses; ++pass) {
+    const Expected<int> flips = flipWithoutCrossing(output, under30);
+    if (!flips) return flips.status();
+    r.flips += *flips;
     const int moved = relaxer.fewerUnder30(fixed, freedom, floor);
-    if (moved == 0) break;
-    Expected<DelaunayFlipResult> flipped = flipToDelaunay(output, params.flips);
-    if (!flipped) return flipped.status();
-    r.flips += flipped->flips;
+    if (moved == 0 && *flips == 0) break;
   }
   r.moves = r.polishMoves = relaxer.polishMoves();
   return r;

@@ -339,5 +339,67 @@ TEST(DelaunayFlips, InconsistentOrientationIsRefusedAndLeftAlone) {
 
 TEST(DelaunayFlips, MeshWithoutFacesIsRefused) { expectRefused(TriMesh(), StatusCode::InvalidInput); }
 
+/// Two faces (x, a, b), (y, b, a) on the edge a = (0, 0, 0), b = (1, 0, 0), with y lifted by z
+/// (a crease along (a, b) of 22 degrees at z = 0.2): smallest angles 24.1 and 27.3 degrees in the
+/// plane. The other diagonal gives 24.0 and 42.2: one face under 30 degrees instead of two. The
+/// facing angles sum to 179.8 degrees, so the Delaunay flips keep (a, b).
+TriMesh quadWithTwoFacesUnder30(double z) {
+  const std::vector<Vec3> positions = {{0, 0, 0}, {1, 0, 0}, {0.33, 0.3, 0}, {0.03, -0.5, z}};  // a, b, x, y
+  return buildTriMesh(positions, {{2, 0, 1}, {3, 1, 0}}).value();
+}
+
+int facesUnder30(const TriMesh& m) {
+  return static_cast<int>(std::lround(test::recountAngles(m).shareBelow30 * m.faceCount()));
+}
+
+// flipToBetterAngles flips to fewer faces under 30 degrees where the Delaunay flips do not, never
+// below its angle bound nor across a crease sharper than its feature angle. Counts and angles are
+// recounted from the positions.
+TEST(AngleFlips, FewerFacesUnder30ThanDelaunay) {
+  TriMesh delaunay = quadWithTwoFacesUnder30(0.0);
+  EXPECT_EQ(flipCount(delaunay), 0);
+  EXPECT_EQ(facesUnder30(delaunay), 2);
+
+  TriMesh m = quadWithTwoFacesUnder30(0.0);
+  const Expected<DelaunayFlipResult> r = flipToBetterAngles(m);
+  ASSERT_TRUE(r) << r.status().message;
+  EXPECT_EQ(r->flips, 1);
+  EXPECT_EQ(facesUnder30(m), 1);
+  EXPECT_NEAR(test::recountAngles(m).smallestDegrees, 23.99, 0.01);
+  expectAdjacencyAsIfRebuilt(m);
+
+  AngleFlipParams bound;  // the flip would make 23.99 degrees: under this bound, it is refused
+  bound.minAngleDegrees = 24.05;
+  TriMesh held = quadWithTwoFacesUnder30(0.0);
+  EXPECT_EQ(flipToBetterAngles(held, bound).value().flips, 0);
+  EXPECT_EQ(held.triangles, delaunay.triangles);
+
+  AngleFlipParams crease;  // the lifted quad: 21.8 degrees between the faces, 24.8 after the flip
+  crease.featureAngleDegrees = 20.0;
+  TriMesh creased = quadWithTwoFacesUnder30(0.2);
+  EXPECT_EQ(flipToBetterAngles(creased, crease).value().flips, 0);
+  crease.featureAngleDegrees = 30.0;
+  EXPECT_EQ(flipToBetterAngles(creased, crease).value().flips, 1);
+  EXPECT_EQ(facesUnder30(creased), 1);
+}
+
+// On a jittered grid, the faces under 30 degrees never grow in number and the smallest angle
+// never falls under the bound given (the grid's own smallest angle), the topology kept.
+TEST(AngleFlips, NeverMoreFacesUnder30NorASmallerAngle) {
+  for (unsigned seed : {3u, 5u, 9u}) {
+    TriMesh m = randomDiagonalGrid(20, 0.35, seed);
+    const int before = facesUnder30(m);
+    AngleFlipParams params;
+    params.minAngleDegrees = test::recountAngles(m).smallestDegrees;
+    const Expected<DelaunayFlipResult> r = flipToBetterAngles(m, params);
+    ASSERT_TRUE(r) << r.status().message;
+    std::printf("seed %u: %d flips, faces under 30 degrees %d -> %d\n", seed, r->flips, before, facesUnder30(m));
+    EXPECT_GT(r->flips, 0);
+    EXPECT_LE(facesUnder30(m), before);
+    EXPECT_GE(test::recountAngles(m).smallestDegrees, params.minAngleDegrees - 1e-9);
+    expectAdjacencyAsIfRebuilt(m);
+  }
+}
+
 }  // namespace
 }  // namespace gr

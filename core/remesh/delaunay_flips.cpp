@@ -279,4 +279,14 @@ Expected<DelaunayFlipResult> flipToBetterAngles(TriMesh& mesh, const AngleFlipPa
   return r;
 }
 
+int flipOneEdge(TriMesh& mesh, int corner, double featureAngleDegrees) {
+  const int o = mesh.oppositeCorner[corner];
+  if (o < 0 || mesh.vertex(corner) == mesh.vertex(o)) return -1;
+  const double cosFeature = std::cos(featureAngleDegrees * kPi / 180.0);
+  if (featureAngleDegrees >= 0 && !flipKeepsSurface(mesh, corner, o, cosFeature, false)) return -1;
+  flipEdge(mesh, corner, o);
+  rebuildVertexCorners(mesh);
+  return 3 * (corner / 3) + 1;  // a, in the new face (x, a, y), faces the new edge (y, x)
+}
+
 }  // namespace gr

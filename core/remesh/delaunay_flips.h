@@ -74,4 +74,10 @@ struct AngleFlipParams {
 };
 Expected<DelaunayFlipResult> flipToBetterAngles(TriMesh& mesh, const AngleFlipParams& params = {});
 
+/// Flips the interior edge facing `corner` of a manifold, coherently oriented mesh if that keeps
+/// the surface (the crease and orientation checks above, creases up to featureAngleDegrees;
+/// negative: no check, to undo a flip) and rebuilds the vertex lists. Returns the corner facing the
+/// new edge (flipOneEdge on it restores the two faces), or -1 if the edge was not flipped.
+int flipOneEdge(TriMesh& mesh, int corner, double featureAngleDegrees);
+
 }  // namespace gr

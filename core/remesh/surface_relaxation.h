@@ -137,7 +137,9 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
 /// on a feature curve), by at least 0.05 degrees a step and never adding a face under 30 degrees,
 /// the point it started from kept within maxDeviation of its faces; a vertex is taken again when
 /// a neighbour moves. Then Delaunay flips, and again while both change something (3 times at
-/// most). Then, up to 3 times: edges flip toward fewer faces under 30 degrees (flipToBetterAngles
+/// most). Then the worst face's edges are flipped, each followed by climbs of the vertices
+/// around it, kept where the smallest angle there rises (the input staying near the faces),
+/// else undone, again from the new worst face while one is kept. Then, up to 3 times: edges flip toward fewer faces under 30 degrees (flipToBetterAngles
 /// in delaunay_flips.h, across creases up to featureAngleDegrees; a round of flips that makes
 /// faces cross is undone), and each free vertex off the feature curves whose ring has faces under
 /// 30 degrees moves to where (of 16 directions at 4 lengths) its ring has the fewest, never below

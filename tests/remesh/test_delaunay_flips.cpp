@@ -401,5 +401,43 @@ TEST(AngleFlips, NeverMoreFacesUnder30NorASmallerAngle) {
   }
 }
 
+/// The faces of `m` as sorted vertex triples, each rotated to start at its smallest vertex.
+std::vector<Tri> canonicalFaces(const TriMesh& m) {
+  std::vector<Tri> faces;
+  for (Tri t : m.triangles) {
+    while (t[0] != std::min({t[0], t[1], t[2]})) t = {t[1], t[2], t[0]};
+    faces.push_back(t);
+  }
+  std::sort(faces.begin(), faces.end());
+  return faces;
+}
+
+// flipOneEdge flips one interior edge (the adjacency as if rebuilt), the corner it returns flips
+// it back to the same faces, and an edge on a crease sharper than the bound stays.
+TEST(OneFlip, FlipsAndFlipsBack) {
+  TriMesh m = randomDiagonalGrid(6, 0.2, 4);
+  const std::vector<Tri> before = canonicalFaces(m);
+  int flipped = 0;
+  for (int c = 0; c < 3 * m.faceCount(); ++c) {
+    if (m.oppositeCorner[c] < 0) continue;
+    const int x = m.vertex(c), y = m.vertex(m.oppositeCorner[c]);
+    const int back = flipOneEdge(m, c, 30.0);
+    if (back < 0) continue;
+    ++flipped;
+    EXPECT_NE(canonicalFaces(m), before);
+    EXPECT_TRUE((m.vertex(TriMesh::next(back)) == x && m.vertex(TriMesh::prev(back)) == y) ||
+                (m.vertex(TriMesh::next(back)) == y && m.vertex(TriMesh::prev(back)) == x));
+    expectAdjacencyAsIfRebuilt(m);
+    ASSERT_GE(flipOneEdge(m, back, -1.0), 0);
+    EXPECT_EQ(canonicalFaces(m), before);
+    expectAdjacencyAsIfRebuilt(m);
+  }
+  EXPECT_GT(flipped, 50);  // most of the 85 interior edges of a 6 x 6 grid
+
+  TriMesh creased = quadWithTwoFacesUnder30(0.2);  // 21.8 degrees between the faces
+  EXPECT_EQ(flipOneEdge(creased, 0, 20.0), -1);
+  EXPECT_GE(flipOneEdge(creased, 0, 30.0), 0);
+}
+
 }  // namespace
 }  // namespace gr

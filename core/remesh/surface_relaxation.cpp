@@ -469,10 +469,11 @@ class Relaxer {
   /// creases up to featureAngleDegrees), then the quad's corners and their neighbours climb
   /// (ascend, kFlipClimbSweeps times over). A flip is kept if the smallest angle of the faces
   /// around the quad rises (by kStepGain), their faces under 30 degrees do not grow in number and
-  /// the input under the edge flipped away stays near them (kFlipDeviation);
-  /// else the flip and the moves are undone. The Delaunay flips and the ascents alone stop at
-  /// such local tops (valences 5 and 8 side by side: knot2 at 30%, 33.7 -> 36.7 degrees). Then
-  /// again from the new worst face, until its three flips all fail, kFlipClimbTries at most.
+  /// the input under the edge flipped away stays near them (kFlipDeviation); else the flip and
+  /// the moves are undone. The Delaunay flips and the ascents alone stop at such local tops
+  /// (valences 5 and 8 side by side: knot2 at 30%, 33.7 -> 36.7 degrees). Then again from the new
+  /// worst face, until its three flips all fail, kFlipClimbTries at most. Cost per try: O(F) to
+  /// find the worst face and to rebuild the vertex lists after each flip and undo.
   /// Returns the flips kept.
   int flipAndClimb(const std::vector<char>& fixed, const std::vector<Freedom>& freedom, double featureAngleDegrees) {
     if (anchor_.empty()) anchor_ = pos_;
@@ -810,9 +811,9 @@ class Relaxer {
   int polishMoves_ = 0;
   std::array<std::vector<double>, 3> angles_;  ///< ascentStep's ring angles, here and a step along e1, e2
   std::vector<Eigen::Vector2d> gradients_, active_;
-  std::vector<int> faces_;  ///< aroundVertices' faces
-  std::vector<int> climbers_;
-  std::vector<std::pair<Vec3, SurfacePoint>> saved_;
+  std::vector<int> faces_;                            ///< aroundVertices' faces
+  std::vector<int> climbers_;                         ///< tryFlipAndClimb's quad and neighbours
+  std::vector<std::pair<Vec3, SurfacePoint>> saved_;  ///< ... and where they were
 
   /// Distance from x to the faces around v with v at position p.
   double fanDistance(int v, const Vec3& p, const Vec3& x) const {

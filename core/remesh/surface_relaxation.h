@@ -138,13 +138,14 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
 /// the point it started from kept within maxDeviation of its faces; a vertex is taken again when
 /// a neighbour moves. Then Delaunay flips, and again while both change something (3 times at
 /// most). Then the worst face's edges are flipped, each followed by climbs of the vertices
-/// around it, kept where the smallest angle there rises (the input staying near the faces),
-/// else undone, again from the new worst face while one is kept. Then, up to 3 times: edges flip toward fewer faces under 30 degrees (flipToBetterAngles
-/// in delaunay_flips.h, across creases up to featureAngleDegrees; a round of flips that makes
-/// faces cross is undone), and each free vertex off the feature curves whose ring has faces under
-/// 30 degrees moves to where (of 16 directions at 4 lengths) its ring has the fewest, never below
-/// the mesh's smallest angle. No flips if flips.maxFlipsPerFace is 0. The smallest angle never falls and the
-/// faces under 30 degrees never grow in number.
+/// around it, kept where the smallest angle there rises (the input staying near the faces), else
+/// undone, again from the new worst face while one is kept. Then, up to 3 times: edges flip
+/// toward fewer faces under 30 degrees (flipToBetterAngles in delaunay_flips.h, across creases
+/// up to featureAngleDegrees; a round of flips that makes faces cross is undone), and each free
+/// vertex off the feature curves whose ring has faces under 30 degrees moves to where (of 16
+/// directions at 4 lengths) its ring has the fewest, never below the mesh's smallest angle. No
+/// flips if flips.maxFlipsPerFace is 0. The smallest angle never falls and the faces under 30
+/// degrees never grow in number.
 /// `pinned` (empty, or one flag per output vertex) holds vertices in place. Fails as
 /// relaxOnSurface, or with InvalidInput if `pinned` has the wrong size.
 Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,

@@ -481,10 +481,29 @@ class Relaxer {
     for (int tries = 0; tries < kFlipClimbTries; ++tries) {
       const int f = worstFace();
       bool better = false;
-      for (int k = 0; k < 3 && !better; ++k) better = tryFlipAndClimb(3 * f + k, fixed, freedom, featureAngleDegrees);
+      for (int k = 0; k < 3 && !better; ++k)
+        better = tryFlipAndClimb(3 * f + k, fixed, freedom, featureAngleDegrees, -1.0);
       if (!better) break;
       ++kept;
     }
+    polishMoves_ += kept;
+    return kept;
+  }
+
+  /// The polish's second part's flips with climbs: each face with an angle under 30 degrees has
+  /// its edges flipped in turn as flipAndClimb does, and a flip is kept if the faces around the
+  /// quad under 30 degrees fall in number, none of them under `floor` (the mesh's smallest: never
+  /// lowered) and no face crossing another; kFlipUnder30Tries tries at most. Returns the flips kept.
+  int flipAndClimbUnder30(const std::vector<char>& fixed, const std::vector<Freedom>& freedom,
+                          double featureAngleDegrees, double floor) {
+    int kept = 0, tries = 0;
+    for (int f = 0; f < output_.faceCount() && tries < kFlipUnder30Tries; ++f)
+      for (int k = 0; k < 3 && tries < kFlipUnder30Tries; ++k) {
+        const Tri& t = output_.triangles[f];  // flips keep face indices: f may be a new face
+        if (smallestAngleCosine(pos_[t[0]], pos_[t[1]], pos_[t[2]]) <= kCos30) break;
+        ++tries;
+        if (tryFlipAndClimb(3 * f + k, fixed, freedom, featureAngleDegrees, floor)) ++kept;
+      }
     polishMoves_ += kept;
     return kept;
   }
@@ -530,9 +549,10 @@ class Relaxer {
     return std::sqrt(nearest);
   }
 
-  /// flipAndClimb's try of the edge facing `corner`; whether it is kept.
+  /// flipAndClimb's try of the edge facing `corner` (`floor` negative), or flipAndClimbUnder30's
+  /// (`floor` its smallest angle allowed, radians); whether it is kept.
   bool tryFlipAndClimb(int corner, const std::vector<char>& fixed, const std::vector<Freedom>& freedom,
-                       double featureAngleDegrees) {
+                       double featureAngleDegrees, double floor) {
     const int o = output_.oppositeCorner[corner];
     if (o < 0) return false;
     const std::array<int, 4> quad = {output_.vertex(corner), output_.vertex(TriMesh::next(corner)),
@@ -560,12 +580,20 @@ class Relaxer {
       for (const int v : climbers_)
         if (!fixed[v] && freedom[v] == Freedom::Surface) ascend(v);
     const std::pair<double, int> after = aroundVertices(quad);
-    if (after.first > before.first + kStepGain && after.second <= before.second && facesDistance(middle) <= maxAway)
-      return true;
+    const bool better = floor < 0 ? after.first > before.first + kStepGain && after.second <= before.second
+                                  : after.second < before.second && after.first >= floor && !facesCrossAround();
+    if (better && facesDistance(middle) <= maxAway) return true;
     for (size_t k = 0; k < climbers_.size(); ++k)
       pos_[climbers_[k]] = saved_[k].first, points_[climbers_[k]] = saved_[k].second;
     flipOneEdge(output_, back, -1);
     return false;
+  }
+
+  /// Whether a face of faces_ (aroundVertices') crosses another face.
+  bool facesCrossAround() {
+    flagged_.assign(output_.faceCount(), 0);
+    for (const int f : faces_) flagged_[f] = 1;
+    return !crossingsOfFaces(output_, flagged_).empty();
   }
 
   /// An ascent step: a unit tangent direction and a length.
@@ -797,8 +825,9 @@ class Relaxer {
   static constexpr double kGradientStep = 1e-5;             ///< finite differences' step, in ring lengths
   static constexpr double kStationary = 1e-9;               ///< gradients under this: no ascent
   static constexpr int kGoldenSections = 40;
-  static constexpr int kFlipClimbTries = 64;  ///< flipAndClimb's flips kept at most
-  static constexpr int kFlipClimbSweeps = 4;  ///< ... and its sweeps of ascents after each flip
+  static constexpr int kFlipClimbTries = 64;     ///< flipAndClimb's flips kept at most
+  static constexpr int kFlipClimbSweeps = 4;     ///< ... and its sweeps of ascents after each flip
+  static constexpr int kFlipUnder30Tries = 256;  ///< flipAndClimbUnder30's tries at most (each O(F))
   /// flipAndClimb: the input's point under the edge flipped away ends within this times
   /// maxDeviation times the edge's length of the faces (or no farther than before). 2 gave
   /// ellipe0.003 at 5% 42.7 instead of 44.4 degrees; with no limit, bunny00 at 10% had a two-sided
@@ -813,6 +842,7 @@ class Relaxer {
   std::vector<Eigen::Vector2d> gradients_, active_;
   std::vector<int> faces_;                            ///< aroundVertices' faces
   std::vector<int> climbers_;                         ///< tryFlipAndClimb's quad and neighbours
+  std::vector<char> flagged_;                         ///< facesCrossAround's faces
   std::vector<std::pair<Vec3, SurfacePoint>> saved_;  ///< ... and where they were
 
   /// Distance from x to the faces around v with v at position p.
@@ -1078,7 +1108,10 @@ Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfaceP
     if (!flips) return flips.status();
     r.flips += *flips;
     const int moved = relaxer.fewerUnder30(fixed, freedom, floor);
-    if (moved == 0 && *flips == 0) break;
+    const int climbed =
+        params.flips.maxFlipsPerFace > 0 ? relaxer.flipAndClimbUnder30(fixed, freedom, flipCrease, floor) : 0;
+    r.flips += climbed;
+    if (moved == 0 && *flips == 0 && climbed == 0) break;
   }
   r.moves = r.polishMoves = relaxer.polishMoves();
   return r;

@@ -143,8 +143,10 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
 /// toward fewer faces under 30 degrees (flipToBetterAngles in delaunay_flips.h, across creases
 /// up to featureAngleDegrees; a round of flips that makes faces cross is undone), and each free
 /// vertex off the feature curves whose ring has faces under 30 degrees moves to where (of 16
-/// directions at 4 lengths) its ring has the fewest, never below the mesh's smallest angle. No
-/// flips if flips.maxFlipsPerFace is 0. The smallest angle never falls and the faces under 30
+/// directions at 4 lengths) its ring has the fewest, never below the mesh's smallest angle, and
+/// the edges of the faces still under 30 degrees are flipped with climbs as above, kept where the
+/// faces under 30 degrees around fall in number and none crosses another face. No flips if
+/// flips.maxFlipsPerFace is 0. The smallest angle never falls and the faces under 30
 /// degrees never grow in number.
 /// `pinned` (empty, or one flag per output vertex) holds vertices in place. Fails as
 /// relaxOnSurface, or with InvalidInput if `pinned` has the wrong size.

@@ -244,6 +244,7 @@ Expected<DelaunayFlipResult> flipTowardValenceSix(TriMesh& mesh, const ValenceFl
       return false;
     if (smallestAngleAfterFlip(pos[x], pos[a], pos[b], pos[y]) < minAngle) return false;
     if (!flipKeepsSurface(mesh, c, o, cosFeature, false)) return false;
+    if (params.accept && !params.accept(c)) return false;
     --valence[a];
     --valence[b];
     ++valence[x];

@@ -23,6 +23,8 @@
 // maxFlipsPerFace * F flips. The adjacency is updated flip by flip, the vertex lists once at the end.
 #pragma once
 
+#include <functional>
+
 #include "core/base/status.h"
 #include "core/mesh/tri_mesh.h"
 
@@ -57,6 +59,10 @@ struct ValenceFlipParams {
   double minAngleDegrees = 30.0;      ///< no new face with a smaller angle
   double featureAngleDegrees = 30.0;  ///< as DelaunayFlipParams::featureAngleDegrees
   int passes = 5;                     ///< sweeps over the edges at most
+  /// Asked last, with the corner facing the edge (the mesh's faces and adjacency as they are, its
+  /// vertex lists not updated during the sweeps): the flip is made only if it returns true.
+  /// Empty: every flip the rules above allow. The polish checks the input surface with it.
+  std::function<bool(int corner)> accept;
 };
 Expected<DelaunayFlipResult> flipTowardValenceSix(TriMesh& mesh, const ValenceFlipParams& params = {});
 

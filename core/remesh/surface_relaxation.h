@@ -139,7 +139,10 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
 /// a neighbour moves. Then Delaunay flips, and again while both change something (3 times at
 /// most). Then the worst face's edges are flipped, each followed by climbs of the vertices
 /// around it, kept where the smallest angle there rises (the input staying near the faces), else
-/// undone, again from the new worst face while one is kept. Then, up to 3 times: edges flip
+/// undone, again from the new worst face while one is kept. Then a batch: edges flip toward
+/// valence 6 (the input staying near the faces), the vertices climb and the worst face's edges
+/// flip again, all kept only if the smallest angle rises, no more faces are under 30 degrees and
+/// no changed face crosses another. Then, up to 3 times: edges flip
 /// toward fewer faces under 30 degrees (flipToBetterAngles in delaunay_flips.h, across creases
 /// up to featureAngleDegrees; a round of flips that makes faces cross is undone), and each free
 /// vertex off the feature curves whose ring has faces under 30 degrees moves to where (of 16

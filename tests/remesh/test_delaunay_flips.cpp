@@ -259,6 +259,49 @@ TEST(ValenceFlips, CreaseIsKept) {
   EXPECT_LT(foldEdges(flat), 20);
 }
 
+/// The mesh's edges, each as (smaller, larger) vertex.
+std::map<std::pair<int, int>, int> edgesOf(const TriMesh& m) {
+  std::map<std::pair<int, int>, int> edges;
+  for (const Tri& t : m.triangles)
+    for (int k = 0; k < 3; ++k) edges[std::minmax(t[k], t[(k + 1) % 3])] = 1;
+  return edges;
+}
+
+// The caller's accept is asked last and decides: refusing all leaves the grid as it was; allowing
+// only edges with both ends left of x = 0.5 flips some, and every edge gone has both ends there.
+TEST(ValenceFlips, AcceptDecidesLast) {
+  const TriMesh grid = randomDiagonalGrid(20, 0.0, 3);
+  ValenceFlipParams none;
+  none.accept = [](int) { return false; };
+  TriMesh refused = grid;
+  ASSERT_TRUE(flipTowardValenceSix(refused, none));
+  EXPECT_EQ(refused.triangles, grid.triangles);
+
+  TriMesh left = grid;
+  ValenceFlipParams leftOnly;
+  int asked = 0;
+  leftOnly.accept = [&](int corner) {
+    ++asked;
+    const int a = left.vertex(TriMesh::next(corner)), b = left.vertex(TriMesh::prev(corner));
+    return left.positions[a].x() < 0.5 - 1e-12 && left.positions[b].x() < 0.5 - 1e-12;
+  };
+  const Expected<DelaunayFlipResult> r = flipTowardValenceSix(left, leftOnly);
+  ASSERT_TRUE(r) << r.status().message;
+  TriMesh all = grid;
+  const Expected<DelaunayFlipResult> unrestricted = flipTowardValenceSix(all);
+  ASSERT_TRUE(unrestricted);
+  std::printf("%d flips of %d asked (%d without accept)\n", r->flips, asked, unrestricted->flips);
+  EXPECT_GT(r->flips, 0);
+  EXPECT_LT(r->flips, unrestricted->flips);
+  const std::map<std::pair<int, int>, int> after = edgesOf(left);
+  for (const auto& [edge, one] : edgesOf(grid))
+    if (!after.count(edge)) {
+      EXPECT_LT(grid.positions[edge.first].x(), 0.5);
+      EXPECT_LT(grid.positions[edge.second].x(), 0.5);
+    }
+  expectAdjacencyAsIfRebuilt(left);
+}
+
 // A cap: x on the segment ab up to a rounding-sized offset out of the plane, as three samples on
 // one straight line of the input give after MeshLab's floats (seen on armadillo subdivided three
 // times, adaptive remesh to 100k: 204 such faces). Its normal is perpendicular to the plane of

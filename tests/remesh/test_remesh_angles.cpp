@@ -81,7 +81,7 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgal,
 // brought from worse to as good: patch-20, bear_bis, blobby_3cc, ellipe0.003 at 5%;
 // elephant-with-holes, double-torus-3-holes, fandisk, knot2 at 30%; and the flips with climbs of
 // the faces under 30 degrees (flipAndClimbUnder30): cylinder_locally_refined at 30% (pig at 10%,
-// above).
+// above); and the valence flips with climbs (valenceFlipsAndClimbs): blobby_3cc at 30%.
 class RemeshAnglesAgainstCgalAtOtherCounts : public ::testing::TestWithParam<std::pair<std::string, int>> {};
 
 TEST_P(RemeshAnglesAgainstCgalAtOtherCounts, SmallestAngleAndShareUnder30AtLeastAsGood) {
@@ -97,7 +97,8 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgalAtOtherCounts,
                                            std::pair<std::string, int>{"double-torus-3-holes.off", 30},
                                            std::pair<std::string, int>{"fandisk.off", 30},
                                            std::pair<std::string, int>{"knot2.off", 30},
-                                           std::pair<std::string, int>{"cylinder_locally_refined.off", 30}),
+                                           std::pair<std::string, int>{"cylinder_locally_refined.off", 30},
+                                           std::pair<std::string, int>{"blobby_3cc.off", 30}),
                          [](const ::testing::TestParamInfo<std::pair<std::string, int>>& p) {
                            return test::testNameOfFile(p.param.first) + "_" + std::to_string(p.param.second);
                          });

@@ -897,12 +897,11 @@ class Relaxer {
   static constexpr double kGradientStep = 1e-5;             ///< finite differences' step, in ring lengths
   static constexpr double kStationary = 1e-9;               ///< gradients under this: no ascent
   static constexpr int kGoldenSections = 40;
-  static constexpr int kFlipClimbTries = 64;  ///< flipAndClimb's flips kept at most
-  static constexpr int kFlipClimbSweeps = 4;  ///< ... and its sweeps of ascents after each flip
-  static constexpr int kFlipUnder30Tries = 256;
-  static constexpr double kValenceSlack =
-      5.0 *
-      kDegree;  ///< valenceFlipsAndClimbs' new faces: the smallest angle minus this  ///< flipAndClimbUnder30's tries at most (each O(F))
+  static constexpr int kFlipClimbTries = 64;     ///< flipAndClimb's flips kept at most
+  static constexpr int kFlipClimbSweeps = 4;     ///< ... and its sweeps of ascents after each flip
+  static constexpr int kFlipUnder30Tries = 256;  ///< flipAndClimbUnder30's tries at most (each O(F))
+  /// valenceFlipsAndClimbs: the valence flips' new faces keep at least the smallest angle minus this
+  static constexpr double kValenceSlack = 5.0 * kDegree;
   /// flipAndClimb: the input's point under the edge flipped away ends within this times
   /// maxDeviation times the edge's length of the faces (or no farther than before). 2 gave
   /// ellipe0.003 at 5% 42.7 instead of 44.4 degrees; with no limit, bunny00 at 10% had a two-sided

@@ -55,6 +55,12 @@ Vec3 closestBary(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   return {1 - v - w, v, w};
 }
 
+/// Squared distance from p to triangle (a, b, c).
+double squaredDistanceToTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 w = closestBary(p, a, b, c);
+  return (p - (w[0] * a + w[1] * b + w[2] * c)).squaredNorm();
+}
+
 /// The input surface as the walks see it: faces, and which edges they may not cross.
 class SurfaceWalker {
  public:
@@ -516,8 +522,8 @@ class Relaxer {
   /// max-min climbs keep the connectivity of the farthest-point samples' Delaunay triangulation,
   /// whose valences spread from 4 to 8 (knot1 at 30%: mean squared excess over 6 of 0.75, CGAL's
   /// isotropic remeshing 0.31). Returns the flips kept.
-  int valenceFlipsAndClimbs(const std::vector<char>& fixed, const std::vector<Freedom>& freedom,
-                            double featureAngleDegrees, double margin) {
+  Expected<int> valenceFlipsAndClimbs(const std::vector<char>& fixed, const std::vector<Freedom>& freedom,
+                                      double featureAngleDegrees, double margin) {
     const TriMesh saved = output_;
     const std::vector<SurfacePoint> savedPoints = points_;
     const int savedMoves = polishMoves_;
@@ -528,7 +534,8 @@ class Relaxer {
     params.featureAngleDegrees = featureAngleDegrees;
     params.accept = [&](int corner) { return keepsInputNear(corner); };
     const Expected<DelaunayFlipResult> flipped = flipTowardValenceSix(output_, params);
-    if (!flipped || flipped->flips == 0) return 0;
+    if (!flipped) return flipped.status();
+    if (flipped->flips == 0) return 0;
     polish(fixed, freedom, margin);
     const int climbed = flipAndClimb(fixed, freedom, featureAngleDegrees);
     if (smallestAngleOf(output_) > smallest + kStepGain && facesUnder30() <= under && !crossesSince(saved))
@@ -558,27 +565,36 @@ class Relaxer {
   }
 
   /// Whether flipping the edge facing `corner` keeps the input near the faces: the input's points
-  /// nearest the middles of the edge and of the new one each end within kFlipDeviation times
-  /// maxDeviation times the edge's length of the new faces, or no farther than from the old.
+  /// under the middles of the edge and of the new one each end within flipLimit of the new faces,
+  /// or no farther than from the old.
   bool keepsInputNear(int corner) const {
     const int o = output_.oppositeCorner[corner];
     const int x = output_.vertex(corner), a = output_.vertex(TriMesh::next(corner));
     const int b = output_.vertex(TriMesh::prev(corner)), y = output_.vertex(o);
-    const double limit = kFlipDeviation * maxDeviation_ * (pos_[a] - pos_[b]).norm();
+    const double limit = flipLimit(a, b);
     const auto distance = [&](const Vec3& p, int u, int v, int w, int z) {  // to faces (u, v, w), (u, w, z)
-      const Vec3 s = closestBary(p, pos_[u], pos_[v], pos_[w]), t = closestBary(p, pos_[u], pos_[w], pos_[z]);
-      return std::min((p - (s[0] * pos_[u] + s[1] * pos_[v] + s[2] * pos_[w])).norm(),
-                      (p - (t[0] * pos_[u] + t[1] * pos_[w] + t[2] * pos_[z])).norm());
+      return std::sqrt(std::min(squaredDistanceToTriangle(p, pos_[u], pos_[v], pos_[w]),
+                                squaredDistanceToTriangle(p, pos_[u], pos_[w], pos_[z])));
     };
     for (const auto& [p, q] : {std::pair<int, int>{a, b}, std::pair<int, int>{x, y}}) {
-      const SurfacePoint below = walker_.project(0.5 * (pos_[p] + pos_[q]), walker_.faceOf(points_[p]));
-      const Vec3 m = walker_.pointOf(below.face, below.bary);
+      const Vec3 m = inputUnderMiddle(p, q);
       // Old faces (x, a, b), (y, b, a) as (a, y, b), (a, b, x); new (x, a, y), (x, y, b).
       const double before = distance(m, a, y, b, x), after = distance(m, x, a, y, b);
       if (after > std::max(before, limit)) return false;
     }
     return true;
   }
+
+  /// The input's point nearest the middle of output edge (p, q): on a ridge, a flip of the edge
+  /// cuts it off.
+  Vec3 inputUnderMiddle(int p, int q) const {
+    const SurfacePoint below = walker_.project(0.5 * (pos_[p] + pos_[q]), walker_.faceOf(points_[p]));
+    return walker_.pointOf(below.face, below.bary);
+  }
+
+  /// How far a flip of edge (a, b) may leave the input under its middle from the faces in any
+  /// case: kFlipDeviation times maxDeviation times the edge's length.
+  double flipLimit(int a, int b) const { return kFlipDeviation * maxDeviation_ * (pos_[a] - pos_[b]).norm(); }
 
   /// The face with the smallest angle.
   int worstFace() const {
@@ -615,8 +631,7 @@ class Relaxer {
     double nearest = std::numeric_limits<double>::infinity();
     for (const int f : faces_) {
       const Tri& t = output_.triangles[f];
-      const Vec3 w = closestBary(x, pos_[t[0]], pos_[t[1]], pos_[t[2]]);
-      nearest = std::min(nearest, (x - (w[0] * pos_[t[0]] + w[1] * pos_[t[1]] + w[2] * pos_[t[2]])).squaredNorm());
+      nearest = std::min(nearest, squaredDistanceToTriangle(x, pos_[t[0]], pos_[t[1]], pos_[t[2]]));
     }
     return std::sqrt(nearest);
   }
@@ -630,12 +645,9 @@ class Relaxer {
     const std::array<int, 4> quad = {output_.vertex(corner), output_.vertex(TriMesh::next(corner)),
                                      output_.vertex(TriMesh::prev(corner)), output_.vertex(o)};
     const std::pair<double, int> before = aroundVertices(quad);
-    // The input's point nearest the middle of the edge flipped away (on a ridge, the flip cuts
-    // it off), and its distance to the faces now.
-    const SurfacePoint below = walker_.project(0.5 * (pos_[quad[1]] + pos_[quad[2]]), walker_.faceOf(points_[quad[1]]));
-    const Vec3 middle = walker_.pointOf(below.face, below.bary);
-    const double maxAway =
-        std::max(facesDistance(middle), kFlipDeviation * maxDeviation_ * (pos_[quad[1]] - pos_[quad[2]]).norm());
+    // The input under the middle of the edge flipped away, and its distance to the faces now.
+    const Vec3 middle = inputUnderMiddle(quad[1], quad[2]);
+    const double maxAway = std::max(facesDistance(middle), flipLimit(quad[1], quad[2]));
     const int back = flipOneEdge(output_, corner, featureAngleDegrees);
     if (back < 0) return false;
     climbers_.clear();
@@ -925,8 +937,7 @@ class Relaxer {
     for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c) {
       const Vec3& a = pos_[output_.vertex(TriMesh::next(*c))];
       const Vec3& b = pos_[output_.vertex(TriMesh::prev(*c))];
-      const Vec3 w = closestBary(x, p, a, b);
-      nearest = std::min(nearest, (x - (w[0] * p + w[1] * a + w[2] * b)).squaredNorm());
+      nearest = std::min(nearest, squaredDistanceToTriangle(x, p, a, b));
     }
     return std::sqrt(nearest);
   }
@@ -1172,8 +1183,12 @@ Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfaceP
   // 30 would hold the face under 30 degrees; input creases sharper than that stay edges.
   const double flipCrease = std::max(params.flips.featureAngleDegrees, params.featureAngleDegrees);
   if (params.flips.maxFlipsPerFace > 0) r.flips += relaxer.flipAndClimb(fixed, freedom, flipCrease);
-  if (params.flips.maxFlipsPerFace > 0)
-    r.flips += relaxer.valenceFlipsAndClimbs(fixed, freedom, flipCrease, params.polishMarginDegrees * kDegree);
+  if (params.flips.maxFlipsPerFace > 0) {
+    const Expected<int> valence =
+        relaxer.valenceFlipsAndClimbs(fixed, freedom, flipCrease, params.polishMarginDegrees * kDegree);
+    if (!valence) return valence.status();
+    r.flips += *valence;
+  }
   const double floor = smallestAngleOf(output);
   AngleFlipParams under30;
   under30.minAngleDegrees = floor / kDegree;

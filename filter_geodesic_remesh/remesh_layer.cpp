@@ -129,6 +129,13 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
             formatNumber(SurfaceRemeshParams::kRescueAngleDegrees, "%g") + "), so the remeshing was redone with " +
             std::to_string(SurfaceRemeshParams::kRescueCentroidalIterations) + " geodesic Lloyd iterations: " +
             (r.angleRescued ? std::string("that output, better, kept") : std::string("not better, the first kept")));
+  if (r.starts > 1)
+    ctx.log("A small output (at most " + std::to_string(SurfaceRemeshParams::kRestartVertices) +
+            " vertices): remeshed from " + std::to_string(r.starts) + " starts of the sampling; " +
+            (r.keptStart > 0 ? "start " + std::to_string(r.keptStart + 1) +
+                                   " kept (fewer triangles under 30 deg or a larger smallest angle, no farther from "
+                                   "the input)"
+                             : std::string("the first kept (no other better)")));
   const Topology& topology = r.mesh.topology;
   ctx.log("Topology kept: " + count(topology.components) + " components, genus " + count(topology.genus) + ", " +
           count(topology.boundaryLoops) + " boundary loops; " +
@@ -233,10 +240,12 @@ void commitRemesh(MeshDocument& doc, const CurrentMesh& current, const SurfaceRe
   warnIfSoup(view.mesh, result, commit.refinement, ctx);
   logQuality(result, ctx);
   const RemeshStageTimes& t = result.times;
-  const double stages = 1e3 * (t.prepare + t.engine + t.sampling + t.triangulation + t.relaxation + t.measure);
+  const double stages =
+      1e3 * (t.prepare + t.engine + t.sampling + t.triangulation + t.relaxation + t.restarts + t.measure);
   ctx.log("Time: " + formatDuration(ms) + " (preparation " + formatDuration(1e3 * t.prepare) + ", engine " +
           formatDuration(1e3 * t.engine) + ", sampling " + formatDuration(1e3 * t.sampling) + ", triangulation " +
           formatDuration(1e3 * t.triangulation) + ", relaxation " + formatDuration(1e3 * t.relaxation) +
+          (t.restarts > 0 ? ", the other starts " + formatDuration(1e3 * t.restarts) : std::string()) +
           ", the log's measures " + formatDuration(1e3 * t.measure) +
           ", other (MeshLab's mesh in and out, the speed field) " + formatDuration(std::max(0.0, ms - stages)) + ")");
 }

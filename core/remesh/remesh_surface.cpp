@@ -465,6 +465,7 @@ int SurfaceRemeshParams::defaultTargetCount(int vertexCount) {
 SurfaceRemeshParams SurfaceRemeshParams::adaptive() {
   SurfaceRemeshParams p;
   p.relaxation.iterations = 0;
+  p.restarts = 0;
   return p;
 }
 
@@ -616,6 +617,11 @@ Expected<SurfaceRemeshResult> remeshOnce(const TriMesh& input, const Metric& met
   return r;
 }
 
+/// The remesh's own stages (not the measures, not the other starts).
+double stagesTotal(const RemeshStageTimes& t) {
+  return t.prepare + t.engine + t.sampling + t.triangulation + t.relaxation;
+}
+
 void addTimes(RemeshStageTimes& to, const RemeshStageTimes& from) {
   to.prepare += from.prepare;
   to.engine += from.engine;
@@ -733,6 +739,67 @@ Status keepInputIfSmaller(const TriMesh& input, SurfaceRemeshResult& r) {
   return {};
 }
 
+/// One whole remesh: the count search (remeshOnce), the angle rescue, the ears, the polish, and
+/// the input kept where the remesh would be larger.
+Expected<SurfaceRemeshResult> remeshWhole(const TriMesh& input, const Metric& metric, const SurfaceRemeshParams& p,
+                                          double remeshShare, Progress progress) {
+  Expected<SurfaceRemeshResult> r = remeshOnce(input, metric, p, remeshShare, progress);
+  if (!r) return r.status();
+  if (Status s = rescueAngles(input, metric, p, remeshShare, progress, *r); !s) return s;
+  removeEars(p, *r);
+  polishOutput(input, p, *r);
+  if (Status s = keepInputIfSmaller(input, *r); !s) return s;
+  return r;
+}
+
+/// The other starts of a small output (SurfaceRemeshParams::restarts): `r` is replaced by the best
+/// of them where one is better and no worse in any figure, its distance to the input included. A
+/// start that fails is passed over; fails only when cancelled.
+/// times.restarts is the wall time of the starts other than the one kept.
+Status restartSmallOutput(const TriMesh& input, const Metric& metric, const SurfaceRemeshParams& p, Progress progress,
+                          SurfaceRemeshResult& r) {
+  if (p.restarts <= 0 || r.mesh.vertexCount() > SurfaceRemeshParams::kRestartVertices ||
+      input.vertexCount() > SurfaceRemeshParams::kRestartInputVertices || r.inputKept || r.looksLikeTriangleSoup)
+    return {};
+  auto clock = std::chrono::steady_clock::now();
+  const AngleStatistics first = angleStatistics(r.mesh);
+  AngleStatistics best = first;
+  // Two-sided, at remeshDistances' samples (remesh_distance.h).
+  const auto distance = [&](const SurfaceRemeshResult& x) {
+    const RemeshDistances d =
+        remeshDistances(input, x.mesh, x.cell, x.origin, x.collapsedVertices == 0 && x.removedEars == 0);
+    return std::max(d.toInput.max, d.fromInput.max);
+  };
+  const double firstDistance = distance(r);
+  std::optional<SurfaceRemeshResult> kept;
+  for (int k = 1; k <= p.restarts; ++k) {
+    if (!progress.report(1.0, "Other starts")) return cancelled();  // at the remesh's end: a check only
+    SurfaceRemeshParams again = p;
+    again.sampling.seed = p.sampling.seed + static_cast<unsigned>(k);
+    Expected<SurfaceRemeshResult> other = remeshWhole(input, metric, again, 1.0, Progress{});
+    if (!other) continue;
+    const AngleStatistics a = angleStatistics(other->mesh);
+    const bool noWorse = other->mesh.vertexCount() == r.mesh.vertexCount() && other->crossingPairs <= r.crossingPairs &&
+                         a.minDegrees >= first.minDegrees && a.shareMinBelow30 <= first.shareMinBelow30 &&
+                         distance(*other) <= firstDistance;
+    const bool better = a.shareMinBelow30 < best.shareMinBelow30 ||
+                        (a.shareMinBelow30 == best.shareMinBelow30 && a.minDegrees > best.minDegrees);
+    if (noWorse && better) {
+      best = a;
+      kept = std::move(*other);
+      kept->keptStart = k;
+    }
+  }
+  double others = lap(clock);
+  if (kept) {  // the first's stages are now among the others, the kept one's no longer
+    others += stagesTotal(r.times) - stagesTotal(kept->times);
+    r = std::move(*kept);
+  }
+  r.starts = 1 + p.restarts;
+  r.times.restarts = std::max(0.0, others);
+  return {};
+}
+
 }  // namespace
 
 Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& metric,
@@ -743,12 +810,9 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   SurfaceRemeshParams p = params;
   if (p.centroidalIterations > 0) p.relaxation = p.relaxation.regularised();
   const double remeshShare = params.measure ? 0.9 : 1.0;
-  Expected<SurfaceRemeshResult> r = remeshOnce(input, metric, p, remeshShare, progress);
+  Expected<SurfaceRemeshResult> r = remeshWhole(input, metric, p, remeshShare, progress);
   if (!r) return r.status();
-  if (Status s = rescueAngles(input, metric, p, remeshShare, progress, *r); !s) return s;
-  removeEars(p, *r);
-  polishOutput(input, p, *r);
-  if (Status s = keepInputIfSmaller(input, *r); !s) return s;
+  if (Status s = restartSmallOutput(input, metric, p, progress.sub(0.0, remeshShare), *r); !s) return s;
   auto clock = std::chrono::steady_clock::now();
   if (params.measure)
     if (Status s = measureOutput(input, params.measureDistance, *r, progress.sub(remeshShare, 1.0)); !s) return s;

@@ -240,8 +240,7 @@ void commitRemesh(MeshDocument& doc, const CurrentMesh& current, const SurfaceRe
   warnIfSoup(view.mesh, result, commit.refinement, ctx);
   logQuality(result, ctx);
   const RemeshStageTimes& t = result.times;
-  const double stages =
-      1e3 * (t.prepare + t.engine + t.sampling + t.triangulation + t.relaxation + t.restarts + t.measure);
+  const double stages = 1e3 * (t.remesh() + t.restarts + t.measure);
   ctx.log("Time: " + formatDuration(ms) + " (preparation " + formatDuration(1e3 * t.prepare) + ", engine " +
           formatDuration(1e3 * t.engine) + ", sampling " + formatDuration(1e3 * t.sampling) + ", triangulation " +
           formatDuration(1e3 * t.triangulation) + ", relaxation " + formatDuration(1e3 * t.relaxation) +

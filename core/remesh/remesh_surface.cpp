@@ -617,11 +617,6 @@ Expected<SurfaceRemeshResult> remeshOnce(const TriMesh& input, const Metric& met
   return r;
 }
 
-/// The remesh's own stages (not the measures, not the other starts).
-double stagesTotal(const RemeshStageTimes& t) {
-  return t.prepare + t.engine + t.sampling + t.triangulation + t.relaxation;
-}
-
 void addTimes(RemeshStageTimes& to, const RemeshStageTimes& from) {
   to.prepare += from.prepare;
   to.engine += from.engine;
@@ -792,7 +787,7 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, const Surf
   }
   double others = lap(clock);
   if (kept) {  // the first's stages are now among the others, the kept one's no longer
-    others += stagesTotal(r.times) - stagesTotal(kept->times);
+    others += r.times.remesh() - kept->times.remesh();
     r = std::move(*kept);
   }
   r.starts = 1 + p.restarts;

@@ -147,6 +147,9 @@ struct RemeshStageTimes {
   double relaxation = 0.0;
   double measure = 0.0;   ///< angles and surface distances (SurfaceRemeshParams::measure)
   double restarts = 0.0;  ///< the other starts of a small output, whole (SurfaceRemeshParams::restarts)
+
+  /// The remesh's own stages: all but the measures and the other starts.
+  double remesh() const { return prepare + engine + sampling + triangulation + relaxation; }
 };
 
 struct SurfaceRemeshResult {

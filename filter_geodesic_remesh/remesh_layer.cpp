@@ -131,11 +131,13 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
             (r.angleRescued ? std::string("that output, better, kept") : std::string("not better, the first kept")));
   if (r.starts > 1)
     ctx.log("A small output (at most " + std::to_string(SurfaceRemeshParams::kRestartVertices) +
-            " vertices): remeshed from " + std::to_string(r.starts) + " starts of the sampling; " +
-            (r.keptStart > 0 ? "start " + std::to_string(r.keptStart + 1) +
-                                   " kept (fewer triangles under 30 deg or a larger smallest angle, no farther from "
-                                   "the input)"
-                             : std::string("the first kept (no other better)")));
+            " vertices): remeshed " + count(r.starts) +
+            " times (other seeds of the sampling, each also relaxed with moves further off the surface); " +
+            (r.keptStart > 0
+                 ? "kept: seed " + std::to_string(r.keptSeed) + ", moves up to " + formatNumber(r.keptDeviation, "%g") +
+                       " of the ring (fewer triangles under 30 deg or a larger smallest angle, no "
+                       "farther from the input)"
+                 : std::string("the first kept (no other better)")));
   const Topology& topology = r.mesh.topology;
   ctx.log("Topology kept: " + count(topology.components) + " components, genus " + count(topology.genus) + ", " +
           count(topology.boundaryLoops) + " boundary loops; " +

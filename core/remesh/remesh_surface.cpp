@@ -747,12 +747,30 @@ Expected<SurfaceRemeshResult> remeshWhole(const TriMesh& input, const Metric& me
   return r;
 }
 
-/// The other starts of a small output (SurfaceRemeshParams::restarts): `r` is replaced by the best
-/// of them where one is better and no worse in any figure, its distance to the input included. A
-/// start that fails is passed over; fails only when cancelled.
+/// The starts of a small output other than the first: the seeds sampling.seed + 1 ..
+/// + restarts, each also with the looser relaxation (restartDeviation), as the first seed.
+std::vector<SurfaceRemeshParams> otherStarts(const SurfaceRemeshParams& p) {
+  std::vector<SurfaceRemeshParams> starts;
+  for (int k = 0; k <= p.restarts; ++k) {
+    SurfaceRemeshParams start = p;
+    start.sampling.seed = p.sampling.seed + static_cast<unsigned>(k);
+    if (k > 0) starts.push_back(start);
+    if (p.restartDeviation > p.relaxation.maxDeviation) {
+      start.relaxation.maxDeviation = p.restartDeviation;
+      starts.push_back(start);
+    }
+  }
+  return starts;
+}
+
+/// The other starts of a small output (SurfaceRemeshParams::restarts, restartDeviation): `r` is
+/// replaced by the best of them where one is better and no worse in any figure, its distance to
+/// the input included. A start that fails is passed over; fails only when cancelled.
 /// times.restarts is the wall time of the starts other than the one kept.
 Status restartSmallOutput(const TriMesh& input, const Metric& metric, const SurfaceRemeshParams& p, Progress progress,
                           SurfaceRemeshResult& r) {
+  r.keptSeed = p.sampling.seed;
+  r.keptDeviation = p.relaxation.maxDeviation;
   if (p.restarts <= 0 || r.mesh.vertexCount() > SurfaceRemeshParams::kRestartVertices ||
       input.vertexCount() > SurfaceRemeshParams::kRestartInputVertices || r.inputKept || r.looksLikeTriangleSoup)
     return {};
@@ -767,11 +785,11 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, const Surf
   };
   const double firstDistance = distance(r);
   std::optional<SurfaceRemeshResult> kept;
-  for (int k = 1; k <= p.restarts; ++k) {
+  const std::vector<SurfaceRemeshParams> starts = otherStarts(p);
+  for (size_t k = 0; k < starts.size(); ++k) {
+    const SurfaceRemeshParams& start = starts[k];
     if (!progress.report(1.0, "Other starts")) return cancelled();  // at the remesh's end: a check only
-    SurfaceRemeshParams again = p;
-    again.sampling.seed = p.sampling.seed + static_cast<unsigned>(k);
-    Expected<SurfaceRemeshResult> other = remeshWhole(input, metric, again, 1.0, Progress{});
+    Expected<SurfaceRemeshResult> other = remeshWhole(input, metric, start, 1.0, Progress{});
     if (!other) continue;
     const AngleStatistics a = angleStatistics(other->mesh);
     const bool noWorse = other->mesh.vertexCount() == r.mesh.vertexCount() && other->crossingPairs <= r.crossingPairs &&
@@ -782,7 +800,9 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, const Surf
     if (noWorse && better) {
       best = a;
       kept = std::move(*other);
-      kept->keptStart = k;
+      kept->keptStart = static_cast<int>(k) + 1;
+      kept->keptSeed = start.sampling.seed;
+      kept->keptDeviation = start.relaxation.maxDeviation;
     }
   }
   double others = lap(clock);
@@ -790,7 +810,7 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, const Surf
     others += r.times.remesh() - kept->times.remesh();
     r = std::move(*kept);
   }
-  r.starts = 1 + p.restarts;
+  r.starts = 1 + static_cast<int>(starts.size());
   r.times.restarts = std::max(0.0, others);
   return {};
 }

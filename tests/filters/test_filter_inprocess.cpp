@@ -631,6 +631,33 @@ TEST_F(FilterInProcess, UniformRemeshMakesANewLayerAndKeepsTheInput) {
   EXPECT_NE(logText().find(expected), std::string::npos) << expected << " in " << logText();
 }
 
+// A small output (sphere.off, 8 vertices) is remeshed from other starts (SurfaceRemeshParams::
+// restarts, restartDeviation); the log says how many and which was kept, as the core chose, and
+// the Time line has their time.
+TEST_F(FilterInProcess, UniformRemeshOfASmallOutputLogsItsStarts) {
+  use("Remeshing: Geodesic Uniform");
+  const TriMesh sphere = test::loadRealMesh("sphere.off");
+  MeshModel* mm = addMesh(doc, sphere.positions, sphere.triangles);
+  declare(*mm);
+  params.setValue(filters::param::kTargetVertices, IntValue(8));
+  ASSERT_TRUE(apply()) << logText();
+  const Expected<adapters::CoreView> asRead = adapters::toCore(mm->cm);  // the input as the filter reads it
+  ASSERT_TRUE(asRead);
+  SurfaceRemeshParams core;
+  core.sampling.targetCount = 8;
+  core.measure = false;
+  const Expected<SurfaceRemeshResult> r = remeshSurface(asRead->mesh, core);
+  ASSERT_TRUE(r) << r.status().message;
+  ASSERT_GT(r->keptStart, 0);
+  EXPECT_EQ(doc.mm()->cm.VN(), r->mesh.vertexCount());
+  char kept[96];
+  std::snprintf(kept, sizeof kept, "remeshed %d times", r->starts);
+  EXPECT_NE(logText().find(kept), std::string::npos) << kept << " in " << logText();
+  std::snprintf(kept, sizeof kept, "kept: seed %u, moves up to %g of the ring", r->keptSeed, r->keptDeviation);
+  EXPECT_NE(logText().find(kept), std::string::npos) << kept << " in " << logText();
+  EXPECT_NE(logText().find("the other starts"), std::string::npos) << logText();
+}
+
 // The log says whether output faces cross (issue 20: the log said "Topology kept" and nothing
 // else over a folded face). bunny00 at 30%: the relaxation refuses the moves that would make
 // faces cross, says how many, and no pair crosses (CGAL). Next test: two spheres through each

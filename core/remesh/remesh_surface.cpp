@@ -747,26 +747,29 @@ Expected<SurfaceRemeshResult> remeshWhole(const TriMesh& input, const Metric& me
   return r;
 }
 
-/// The starts of a small output other than the first: the seeds sampling.seed + 1 ..
-/// + restarts, each also with the looser relaxation (restartDeviation), as the first seed.
+/// The starts of a small output other than the first, in the order they are judged: the seeds
+/// sampling.seed + 1 .. + restarts, then each seed from the first with the looser relaxation
+/// (restartDeviation).
 std::vector<SurfaceRemeshParams> otherStarts(const SurfaceRemeshParams& p) {
   std::vector<SurfaceRemeshParams> starts;
-  for (int k = 0; k <= p.restarts; ++k) {
-    SurfaceRemeshParams start = p;
-    start.sampling.seed = p.sampling.seed + static_cast<unsigned>(k);
-    if (k > 0) starts.push_back(start);
-    if (p.restartDeviation > p.relaxation.maxDeviation) {
-      start.relaxation.maxDeviation = p.restartDeviation;
-      starts.push_back(start);
-    }
+  for (int k = 1; k <= p.restarts; ++k) {
+    starts.push_back(p);
+    starts.back().sampling.seed = p.sampling.seed + static_cast<unsigned>(k);
   }
+  if (p.restartDeviation > p.relaxation.maxDeviation)
+    for (int k = 0; k <= p.restarts; ++k) {
+      starts.push_back(p);
+      starts.back().sampling.seed = p.sampling.seed + static_cast<unsigned>(k);
+      starts.back().relaxation.maxDeviation = p.restartDeviation;
+    }
   return starts;
 }
 
 /// The other starts of a small output (SurfaceRemeshParams::restarts, restartDeviation): `r` is
-/// replaced by the best of them where one is better and no worse in any figure, its distance to
-/// the input included. A start that fails is passed over; fails only when cancelled.
-/// times.restarts is the wall time of the starts other than the one kept.
+/// replaced by the best of them where one is better and no worse in any figure than the first, its
+/// distance to the input included; a start with the looser relaxation must also be no farther from
+/// the input than the output kept so far. A start that fails is passed over; fails only when
+/// cancelled. times.restarts is the wall time of the starts other than the one kept.
 Status restartSmallOutput(const TriMesh& input, const Metric& metric, const SurfaceRemeshParams& p, Progress progress,
                           SurfaceRemeshResult& r) {
   r.keptSeed = p.sampling.seed;
@@ -784,6 +787,7 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, const Surf
     return std::max(d.toInput.max, d.fromInput.max);
   };
   const double firstDistance = distance(r);
+  double keptDistance = firstDistance;
   std::optional<SurfaceRemeshResult> kept;
   const std::vector<SurfaceRemeshParams> starts = otherStarts(p);
   for (size_t k = 0; k < starts.size(); ++k) {
@@ -792,18 +796,20 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, const Surf
     Expected<SurfaceRemeshResult> other = remeshWhole(input, metric, start, 1.0, Progress{});
     if (!other) continue;
     const AngleStatistics a = angleStatistics(other->mesh);
-    const bool noWorse = other->mesh.vertexCount() == r.mesh.vertexCount() && other->crossingPairs <= r.crossingPairs &&
-                         a.minDegrees >= first.minDegrees && a.shareMinBelow30 <= first.shareMinBelow30 &&
-                         distance(*other) <= firstDistance;
     const bool better = a.shareMinBelow30 < best.shareMinBelow30 ||
                         (a.shareMinBelow30 == best.shareMinBelow30 && a.minDegrees > best.minDegrees);
-    if (noWorse && better) {
-      best = a;
-      kept = std::move(*other);
-      kept->keptStart = static_cast<int>(k) + 1;
-      kept->keptSeed = start.sampling.seed;
-      kept->keptDeviation = start.relaxation.maxDeviation;
-    }
+    const bool looser = start.relaxation.maxDeviation > p.relaxation.maxDeviation;
+    if (!better || other->mesh.vertexCount() != r.mesh.vertexCount() || other->crossingPairs > r.crossingPairs ||
+        a.minDegrees < first.minDegrees || a.shareMinBelow30 > first.shareMinBelow30)
+      continue;
+    const double d = distance(*other);
+    if (d > (looser ? keptDistance : firstDistance)) continue;
+    best = a;
+    keptDistance = d;
+    kept = std::move(*other);
+    kept->keptStart = static_cast<int>(k) + 1;
+    kept->keptSeed = start.sampling.seed;
+    kept->keptDeviation = start.relaxation.maxDeviation;
   }
   double others = lap(clock);
   if (kept) {  // the first's stages are now among the others, the kept one's no longer

@@ -116,9 +116,10 @@ struct SurfaceRemeshParams {
   /// figure, three more, at its cost: corner_with_hole at 30% went from 43.9 to 66.8% of the
   /// diagonal in two-sided Hausdorff distance, patch-23 at 5% from 17.5 to 23.1%. The call then
   /// takes about 2 (1 + restarts) times as long (restartDeviation, below): hence the bound on the
-  /// input, which keeps that under about 2 s (at 60 vertices, cow.off, 2,904 input vertices: 0.38
-  /// -> 1.9 s; femur.off, 3,897: 0.76 -> 4.4 s; man.off, 17,495: 1.3 -> 15.4 s; the data set's
-  /// small outputs at 5-30% all come from inputs of at most 1,230). 0 = the first output only.
+  /// input, which keeps that to a few seconds (ALSTOM_TEST4.off, 1,138 input vertices, at 55: 1.5
+  /// -> 3.0 s; at 60 vertices, cow.off, 2,904: 0.38 -> 1.9 s; femur.off, 3,897: 0.76 -> 4.4 s;
+  /// man.off, 17,495: 1.3 -> 15.4 s; the data set's small outputs at 5-30% all come from inputs of
+  /// at most 1,230). 0 = the first output only.
   /// Not for the adaptive preset, whose outputs are chosen for their distance to the input.
   int restarts = 3;
   /// Each seed of a small output's starts, the first included, is also run with the relaxation's

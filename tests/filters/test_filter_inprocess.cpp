@@ -73,6 +73,14 @@ std::vector<Tri> faceIndices(const MeshModel& mm) {
   return tris;
 }
 
+/// The core's uniform remesh (the function the filter calls) of a layer as the filter reads it:
+/// MeshLab holds coordinates as float, so the core must see the same.
+Expected<SurfaceRemeshResult> remeshAsTheFilterReads(const MeshModel& mm, const SurfaceRemeshParams& params) {
+  const Expected<adapters::CoreView> asRead = adapters::toCore(mm.cm);
+  if (!asRead) return asRead.status();
+  return remeshSurface(asRead->mesh, params);
+}
+
 /// Everything a filter could change in a mesh.
 struct Snapshot {
   std::vector<float> values;
@@ -617,12 +625,10 @@ TEST_F(FilterInProcess, UniformRemeshMakesANewLayerAndKeepsTheInput) {
   doc.setCurrent(mm);
   params.setValue(filters::param::kReportError, BoolValue(true));
   ASSERT_TRUE(apply()) << logText();
-  const Expected<adapters::CoreView> asRead = adapters::toCore(mm->cm);  // the input as the filter reads it
-  ASSERT_TRUE(asRead);
   SurfaceRemeshParams core;
   core.sampling.targetCount = 400;
   core.measureDistance = true;
-  const Expected<SurfaceRemeshResult> measured = remeshSurface(asRead->mesh, core);
+  const Expected<SurfaceRemeshResult> measured = remeshAsTheFilterReads(*mm, core);
   ASSERT_TRUE(measured) << measured.status().message;
   const RemeshMeasures& m = measured->measures;
   char expected[64];
@@ -641,12 +647,10 @@ TEST_F(FilterInProcess, UniformRemeshOfASmallOutputLogsItsStarts) {
   declare(*mm);
   params.setValue(filters::param::kTargetVertices, IntValue(8));
   ASSERT_TRUE(apply()) << logText();
-  const Expected<adapters::CoreView> asRead = adapters::toCore(mm->cm);  // the input as the filter reads it
-  ASSERT_TRUE(asRead);
   SurfaceRemeshParams core;
   core.sampling.targetCount = 8;
   core.measure = false;
-  const Expected<SurfaceRemeshResult> r = remeshSurface(asRead->mesh, core);
+  const Expected<SurfaceRemeshResult> r = remeshAsTheFilterReads(*mm, core);
   ASSERT_TRUE(r) << r.status().message;
   ASSERT_GT(r->keptStart, 0);
   EXPECT_EQ(doc.mm()->cm.VN(), r->mesh.vertexCount());

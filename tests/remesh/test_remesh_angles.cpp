@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -135,44 +136,49 @@ void expectBetterStartKept(const std::string& name, const TriMesh& input, const 
   EXPECT_GT(after.times.restarts, 0.0);
 }
 
+/// `name` remeshed at `percent` twice: `before` with `lessen` applied to the defaults, `after`
+/// with the defaults.
+struct BeforeAndAfter {
+  TriMesh input;
+  Expected<SurfaceRemeshResult> before, after;
+};
+BeforeAndAfter remeshBeforeAndAfter(const std::string& name, int percent,
+                                    const std::function<void(SurfaceRemeshParams&)>& lessen) {
+  const TriMesh input = test::loadRealMesh(name);
+  SurfaceRemeshParams params;
+  params.sampling.targetCount = input.vertexCount() * percent / 100;
+  params.measure = false;
+  SurfaceRemeshParams lessened = params;
+  lessen(lessened);
+  return {input, remeshSurface(input, lessened), remeshSurface(input, params)};
+}
+
 // The other starts of a small output (SurfaceRemeshParams::restarts): patch-20 at 10% (35
 // vertices) remeshed with them and without; another start is kept, better (33.9 -> 39.0 degrees).
 TEST(RemeshAngles, OtherStartsOfASmallOutputKeepOnlyABetterOne) {
-  const TriMesh input = test::loadRealMesh("patch-20.off");
-  SurfaceRemeshParams params;
-  params.sampling.targetCount = input.vertexCount() / 10;
-  params.measure = false;
-  params.restarts = 0;
-  const Expected<SurfaceRemeshResult> first = remeshSurface(input, params);
-  ASSERT_TRUE(first) << first.status().message;
-  params.restarts = SurfaceRemeshParams{}.restarts;
-  const Expected<SurfaceRemeshResult> best = remeshSurface(input, params);
-  ASSERT_TRUE(best) << best.status().message;
-  EXPECT_EQ(first->starts, 1);
-  EXPECT_EQ(best->starts, 2 * (1 + params.restarts)) << "each seed also with the looser relaxation";
-  EXPECT_GT(best->keptStart, 0) << "on this mesh another start is better";
-  expectBetterStartKept("patch-20 at 10%", input, *first, *best);
+  const BeforeAndAfter b = remeshBeforeAndAfter("patch-20.off", 10, [](SurfaceRemeshParams& p) { p.restarts = 0; });
+  ASSERT_TRUE(b.before) << b.before.status().message;
+  ASSERT_TRUE(b.after) << b.after.status().message;
+  EXPECT_EQ(b.before->starts, 1);
+  EXPECT_EQ(b.after->starts, 2 * (1 + SurfaceRemeshParams{}.restarts)) << "each seed also with the looser relaxation";
+  EXPECT_GT(b.after->keptStart, 0) << "on this mesh another start is better";
+  expectBetterStartKept("patch-20 at 10%", b.input, *b.before, *b.after);
 }
 
 // The looser relaxation of a small output's starts (SurfaceRemeshParams::restartDeviation):
 // sphere.off at 5% (8 vertices) with it and without; one relaxed with moves up to
 // restartDeviation of the ring is kept, better (42.5 -> 51.5 degrees).
 TEST(RemeshAngles, LooserStartsOfASmallOutputKeepOnlyABetterOne) {
-  const TriMesh input = test::loadRealMesh("sphere.off");
-  SurfaceRemeshParams params;
-  params.sampling.targetCount = input.vertexCount() * 5 / 100;
-  params.measure = false;
-  params.restartDeviation = 0.0;
-  const Expected<SurfaceRemeshResult> tight = remeshSurface(input, params);
-  ASSERT_TRUE(tight) << tight.status().message;
-  params.restartDeviation = SurfaceRemeshParams{}.restartDeviation;
-  const Expected<SurfaceRemeshResult> loose = remeshSurface(input, params);
-  ASSERT_TRUE(loose) << loose.status().message;
-  EXPECT_EQ(tight->starts, 1 + params.restarts);
-  EXPECT_EQ(loose->starts, 2 * (1 + params.restarts));
-  EXPECT_EQ(tight->keptDeviation, params.relaxation.maxDeviation);
-  EXPECT_EQ(loose->keptDeviation, params.restartDeviation) << "on this mesh a looser start is better";
-  expectBetterStartKept("sphere.off at 5%", input, *tight, *loose);
+  const BeforeAndAfter b =
+      remeshBeforeAndAfter("sphere.off", 5, [](SurfaceRemeshParams& p) { p.restartDeviation = 0.0; });
+  ASSERT_TRUE(b.before) << b.before.status().message;
+  ASSERT_TRUE(b.after) << b.after.status().message;
+  const SurfaceRemeshParams defaults;
+  EXPECT_EQ(b.before->starts, 1 + defaults.restarts);
+  EXPECT_EQ(b.after->starts, 2 * (1 + defaults.restarts));
+  EXPECT_EQ(b.before->keptDeviation, defaults.relaxation.maxDeviation);
+  EXPECT_EQ(b.after->keptDeviation, defaults.restartDeviation) << "on this mesh a looser start is better";
+  expectBetterStartKept("sphere.off at 5%", b.input, *b.before, *b.after);
 }
 
 // Flat ears off the boundary (removeFlatEars): lion-head at 30% had two ears of 5.8 and 6.2

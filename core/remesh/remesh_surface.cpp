@@ -688,12 +688,14 @@ void polishOutput(const TriMesh& input, const SurfaceRemeshParams& params, Surfa
   Expected<OrientedSurface> oriented = orientedSurface(input);
   if (!oriented) return;
   const TriMesh& surface = oriented->copy ? *oriented->copy : input;
-  std::vector<char> pinned;
+  PolishGuard guard;  // the cells let the polish measure its distance to the input
+  if (r.mesh.vertexCount() <= params.measuredPolishVertices) guard.cell = &r.cell;
+  guard.voronoiCells = r.collapsedVertices == 0 && r.removedEars == 0;
   for (int round = 0; round <= kPolishPinRounds; ++round) {
     TriMesh polished = r.mesh;
     std::vector<SurfacePoint> points = r.origin;
     swapFlipped(points, oriented->flipped);
-    const Expected<RelaxationResult> done = polishOnSurface(polished, points, surface, relaxation, pinned);
+    const Expected<RelaxationResult> done = polishOnSurface(polished, points, surface, relaxation, guard);
     if (!done || done->polishMoves == 0) break;
     // Without crossings before, only faces the polish changed can cross now.
     const std::vector<std::pair<int, int>> pairs = r.crossingPairs == 0
@@ -707,7 +709,7 @@ void polishOutput(const TriMesh& input, const SurfaceRemeshParams& params, Surfa
       r.relaxation.flips += done->flips;
       break;
     }
-    flagCrossingCorners(polished, pairs, true, pinned);
+    flagCrossingCorners(polished, pairs, true, guard.pinned);
   }
   r.times.relaxation += lap(clock);
 }

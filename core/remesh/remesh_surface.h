@@ -137,6 +137,18 @@ struct SurfaceRemeshParams {
   double restartDeviation = RelaxationParams::kRegularMaxDeviation;
   static constexpr int kRestartVertices = 64;
   static constexpr int kRestartInputVertices = 2500;
+  /// The polish's measured valence batches (PolishGuard::cell in surface_relaxation.h: flips
+  /// toward valence 6 with no bound on the new faces' angles, then with moves toward the rings'
+  /// means, each kept only if the smallest angle rises and the two-sided distance to the input
+  /// does not grow) run on outputs of at most this many vertices. Over the data set against CGAL's
+  /// isotropic remeshing: as good on two more meshes at 30% (knot1 33.8 -> 37.7 degrees, CGAL
+  /// 36.0; larger_sphere 40.6 -> 43.0, CGAL 41.8), the same statuses at 5% and 10%
+  /// (docs/BENCHMARKS.md). They cost a few distances and the climbs after the flips, kept or
+  /// not: best of 3, larger_sphere at 30% (243 vertices) 19 -> 73 ms, knot1 at 30% (960) 73 ->
+  /// 161 ms, anchor_dense at 30% (1,141) 120 -> 205 ms with nothing kept, fandisk at 30% (1,944)
+  /// 97 -> 108 ms. On larger outputs, where nothing was kept, they cost a third more (bunny00 at
+  /// 10%, 3,775 vertices: 216 -> 290 ms; at 30% 686 -> 940 ms): hence the bound. 0 = never.
+  int measuredPolishVertices = 2000;
   /// Also measure the output: angle statistics and (measureDistance) the surface distance to the
   /// input both ways (the figures of the filters' log).
   bool measure = true;

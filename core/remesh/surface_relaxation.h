@@ -122,6 +122,16 @@ struct RelaxationGuard {
   std::vector<char> watched;
 };
 
+/// What the polish (polishOnSurface) is given beyond the meshes.
+struct PolishGuard {
+  std::vector<char> pinned;  ///< empty, or per output vertex: does not move
+  /// Null, or per vertex of the input its output vertex (SurfaceRemeshResult::cell). Given, the
+  /// polish also tries the valence batches that move the surface more, kept only where the
+  /// two-sided distance to the input (remeshDistances in remesh_distance.h) does not grow.
+  const std::vector<int>* cell = nullptr;
+  bool voronoiCells = true;  ///< remeshDistances' voronoiCells
+};
+
 /// Relaxes `output` in place on the surface of `input`. `points[i]` is where output vertex i lies
 /// on the input (as DelaunayResult::origin) and is updated with it; `guard` constrains some. Fails, changing nothing, with
 /// NonManifold if either mesh is not manifold, or InvalidInput if the sizes disagree, a point is
@@ -139,10 +149,13 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
 /// a neighbour moves. Then Delaunay flips, and again while both change something (3 times at
 /// most). Then the worst face's edges are flipped, each followed by climbs of the vertices
 /// around it, kept where the smallest angle there rises (the input staying near the faces), else
-/// undone, again from the new worst face while one is kept. Then a batch: edges flip toward
+/// undone, again from the new worst face while one is kept. Then batches: edges flip toward
 /// valence 6 (the input staying near the faces), the vertices climb and the worst face's edges
 /// flip again, all kept only if the smallest angle rises, no more faces are under 30 degrees and
-/// no changed face crosses another. Then, up to 3 times: edges flip
+/// no changed face crosses another; the first keeps the new faces near the smallest angle, and
+/// with `guard.cell` two more follow (flips with no bound on the angles, undone at once if they
+/// leave a face under 5 degrees; flips, then two rounds of moves toward the rings' means), each
+/// kept only if the two-sided distance to the input does not grow either. Then, up to 3 times: edges flip
 /// toward fewer faces under 30 degrees (flipToBetterAngles in delaunay_flips.h, across creases
 /// up to featureAngleDegrees; a round of flips that makes faces cross is undone), and each free
 /// vertex off the feature curves whose ring has faces under 30 degrees moves to where (of 16
@@ -151,9 +164,10 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
 /// faces under 30 degrees around fall in number and none crosses another face. No flips if
 /// flips.maxFlipsPerFace is 0. The smallest angle never falls and the faces under 30
 /// degrees never grow in number.
-/// `pinned` (empty, or one flag per output vertex) holds vertices in place. Fails as
-/// relaxOnSurface, or with InvalidInput if `pinned` has the wrong size.
+/// `guard.pinned` (empty, or one flag per output vertex) holds vertices in place. Fails as
+/// relaxOnSurface, or with InvalidInput if `pinned` or `cell` has the wrong size or a cell is
+/// neither -1 nor an output vertex.
 Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
-                                           const RelaxationParams& params = {}, const std::vector<char>& pinned = {});
+                                           const RelaxationParams& params = {}, const PolishGuard& guard = {});
 
 }  // namespace gr

@@ -22,6 +22,7 @@
 
 #include "core/mesh/vcg_mesh.h"
 #include "core/remesh/remesh_surface.h"
+#include "core/remesh/surface_relaxation.h"
 #include "tests/oracles/remesh_oracles.h"
 #include "tests/support/test_support.h"
 
@@ -85,7 +86,8 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgal,
 // above); the valence flips with climbs (valenceFlipsAndClimbs): blobby_3cc at 30%; and the
 // other starts of a small output (SurfaceRemeshParams::restarts): patch-30 at 5%, blob-closed and
 // corner_tris_with_hole at 30%; and their looser relaxation (restartDeviation): sphere.off,
-// sphere.ply, itemb and ALSTOM_TEST4 at 5%.
+// sphere.ply, itemb and ALSTOM_TEST4 at 5%; and the polish's measured valence batches
+// (SurfaceRemeshParams::measuredPolishVertices): knot1 and larger_sphere at 30%.
 class RemeshAnglesAgainstCgalAtOtherCounts : public ::testing::TestWithParam<std::pair<std::string, int>> {};
 
 TEST_P(RemeshAnglesAgainstCgalAtOtherCounts, SmallestAngleAndShareUnder30AtLeastAsGood) {
@@ -94,18 +96,18 @@ TEST_P(RemeshAnglesAgainstCgalAtOtherCounts, SmallestAngleAndShareUnder30AtLeast
 
 INSTANTIATE_TEST_SUITE_P(
     Meshes, RemeshAnglesAgainstCgalAtOtherCounts,
-    ::testing::Values(std::pair<std::string, int>{"patch-20.off", 5}, std::pair<std::string, int>{"bear_bis.off", 5},
-                      std::pair<std::string, int>{"blobby_3cc.off", 5},
-                      std::pair<std::string, int>{"ellipe0.003.off", 5},
-                      std::pair<std::string, int>{"elephant-with-holes.off", 30},
-                      std::pair<std::string, int>{"double-torus-3-holes.off", 30},
-                      std::pair<std::string, int>{"fandisk.off", 30}, std::pair<std::string, int>{"knot2.off", 30},
-                      std::pair<std::string, int>{"cylinder_locally_refined.off", 30},
-                      std::pair<std::string, int>{"blobby_3cc.off", 30}, std::pair<std::string, int>{"patch-30.off", 5},
-                      std::pair<std::string, int>{"blob-closed.off", 30},
-                      std::pair<std::string, int>{"corner_tris_with_hole.off", 30},
-                      std::pair<std::string, int>{"sphere.off", 5}, std::pair<std::string, int>{"sphere.ply", 5},
-                      std::pair<std::string, int>{"itemb.off", 5}, std::pair<std::string, int>{"ALSTOM_TEST4.off", 5}),
+    ::testing::Values(
+        std::pair<std::string, int>{"patch-20.off", 5}, std::pair<std::string, int>{"bear_bis.off", 5},
+        std::pair<std::string, int>{"blobby_3cc.off", 5}, std::pair<std::string, int>{"ellipe0.003.off", 5},
+        std::pair<std::string, int>{"elephant-with-holes.off", 30},
+        std::pair<std::string, int>{"double-torus-3-holes.off", 30}, std::pair<std::string, int>{"fandisk.off", 30},
+        std::pair<std::string, int>{"knot2.off", 30}, std::pair<std::string, int>{"cylinder_locally_refined.off", 30},
+        std::pair<std::string, int>{"blobby_3cc.off", 30}, std::pair<std::string, int>{"patch-30.off", 5},
+        std::pair<std::string, int>{"blob-closed.off", 30},
+        std::pair<std::string, int>{"corner_tris_with_hole.off", 30}, std::pair<std::string, int>{"sphere.off", 5},
+        std::pair<std::string, int>{"sphere.ply", 5}, std::pair<std::string, int>{"itemb.off", 5},
+        std::pair<std::string, int>{"ALSTOM_TEST4.off", 5}, std::pair<std::string, int>{"knot1.off", 30},
+        std::pair<std::string, int>{"larger_sphere.off", 30}),
     [](const ::testing::TestParamInfo<std::pair<std::string, int>>& p) {
       return test::testNameOfFile(p.param.first) + "_" + std::to_string(p.param.second);
     });
@@ -179,6 +181,52 @@ TEST(RemeshAngles, LooserStartsOfASmallOutputKeepOnlyABetterOne) {
   EXPECT_EQ(b.before->keptDeviation, defaults.relaxation.maxDeviation);
   EXPECT_EQ(b.after->keptDeviation, defaults.restartDeviation) << "on this mesh a looser start is better";
   expectBetterStartKept("sphere.off at 5%", b.input, *b.before, *b.after);
+}
+
+// The polish's measured valence batches (SurfaceRemeshParams::measuredPolishVertices, the
+// remesh's cells given to polishOnSurface): larger_sphere at 30% (243 vertices) remeshed with them
+// and without. With them the smallest angle is higher (40.6 -> 43.0 degrees) and the two-sided
+// distance to the input, measured by the oracle, no larger (they are kept only where
+// remeshDistances' does not grow); the same count, the input's topology recounted, no crossing
+// faces (CGAL). Cells of the wrong size, or naming no output vertex, are refused by the polish,
+// the mesh unchanged.
+TEST(RemeshAngles, MeasuredValenceBatchesRaiseTheSmallestAngleNotTheDistance) {
+  const BeforeAndAfter b =
+      remeshBeforeAndAfter("larger_sphere.off", 30, [](SurfaceRemeshParams& p) { p.measuredPolishVertices = 0; });
+  ASSERT_TRUE(b.before) << b.before.status().message;
+  ASSERT_TRUE(b.after) << b.after.status().message;
+  ASSERT_LE(b.after->mesh.vertexCount(), SurfaceRemeshParams{}.measuredPolishVertices);
+  const double before = test::recountAngles(b.before->mesh).smallestDegrees;
+  const double after = test::recountAngles(b.after->mesh).smallestDegrees;
+  const double diagonal = b.input.boundingBoxDiagonal();
+  const double d0 = oracle::twoSidedDistance(b.before->mesh, b.input).max / diagonal;
+  const double d1 = oracle::twoSidedDistance(b.after->mesh, b.input).max / diagonal;
+  std::printf("larger_sphere at 30%%: smallest %.2f -> %.2f deg, two-sided Hausdorff %.4f -> %.4f %%\n", before, after,
+              100 * d0, 100 * d1);
+  EXPECT_EQ(b.after->mesh.vertexCount(), b.before->mesh.vertexCount());
+  EXPECT_GT(after, before + 1.0);
+  EXPECT_LE(d1, d0);
+  test::expectValidWithTopologyOf(test::recount(b.after->mesh.triangles, b.after->mesh.vertexCount()),
+                                  test::recount(b.input.triangles, b.input.vertexCount()));
+  EXPECT_TRUE(oracle::selfIntersections(b.after->mesh).value().empty());
+
+  TriMesh refused = b.before->mesh;
+  std::vector<SurfacePoint> points = b.before->origin;
+  const std::vector<int> tooShort(b.before->cell.begin(), b.before->cell.end() - 1);
+  PolishGuard guard;
+  guard.cell = &tooShort;
+  const Expected<RelaxationResult> wrong = polishOnSurface(refused, points, b.input, RelaxationParams{}, guard);
+  ASSERT_FALSE(wrong);
+  EXPECT_EQ(wrong.status().code, StatusCode::InvalidInput);
+  EXPECT_EQ(refused.positions, b.before->mesh.positions);
+  EXPECT_EQ(refused.triangles, b.before->mesh.triangles);
+  std::vector<int> outOfRange = b.before->cell;
+  outOfRange.back() = b.before->mesh.vertexCount();  // no such output vertex
+  guard.cell = &outOfRange;
+  const Expected<RelaxationResult> beyond = polishOnSurface(refused, points, b.input, RelaxationParams{}, guard);
+  ASSERT_FALSE(beyond);
+  EXPECT_EQ(beyond.status().code, StatusCode::InvalidInput);
+  EXPECT_EQ(refused.positions, b.before->mesh.positions);
 }
 
 // Flat ears off the boundary (removeFlatEars): lion-head at 30% had two ears of 5.8 and 6.2

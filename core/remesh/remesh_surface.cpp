@@ -24,6 +24,10 @@
 namespace gr {
 namespace {
 
+/// Whether the remesh's cells are still the Voronoi cells of its vertices (remeshDistances'
+/// voronoiCells): edge collapses and removed ears merge cells.
+bool cellsAreVoronoi(const SurfaceRemeshResult& r) { return r.collapsedVertices == 0 && r.removedEars == 0; }
+
 /// Seconds since `start`, and restarts it.
 double lap(std::chrono::steady_clock::time_point& start) {
   const auto now = std::chrono::steady_clock::now();
@@ -404,8 +408,7 @@ Expected<SampledDual> sampleToCount(FastMarcher& marcher, const FrontSurface& fr
 Status measureOutput(const TriMesh& input, bool distances, SurfaceRemeshResult& r, Progress progress) {
   r.measures.angles = angleStatistics(r.mesh);
   if (!distances) return Status::ok();
-  const RemeshDistances d =
-      remeshDistances(input, r.mesh, r.cell, r.origin, r.collapsedVertices == 0 && r.removedEars == 0);
+  const RemeshDistances d = remeshDistances(input, r.mesh, r.cell, r.origin, cellsAreVoronoi(r));
   r.measures.toInput = d.toInput;
   r.measures.fromInput = d.fromInput;
   r.measures.inputDiagonal = input.boundingBoxDiagonal();
@@ -690,7 +693,7 @@ void polishOutput(const TriMesh& input, const SurfaceRemeshParams& params, Surfa
   const TriMesh& surface = oriented->copy ? *oriented->copy : input;
   PolishGuard guard;  // the cells let the polish measure its distance to the input
   if (r.mesh.vertexCount() <= params.measuredPolishVertices) guard.cell = &r.cell;
-  guard.voronoiCells = r.collapsedVertices == 0 && r.removedEars == 0;
+  guard.voronoiCells = cellsAreVoronoi(r);
   for (int round = 0; round <= kPolishPinRounds; ++round) {
     TriMesh polished = r.mesh;
     std::vector<SurfacePoint> points = r.origin;
@@ -784,8 +787,7 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, const Surf
   AngleStatistics best = first;
   // Two-sided, at remeshDistances' samples (remesh_distance.h).
   const auto distance = [&](const SurfaceRemeshResult& x) {
-    const RemeshDistances d =
-        remeshDistances(input, x.mesh, x.cell, x.origin, x.collapsedVertices == 0 && x.removedEars == 0);
+    const RemeshDistances d = remeshDistances(input, x.mesh, x.cell, x.origin, cellsAreVoronoi(x));
     return std::max(d.toInput.max, d.fromInput.max);
   };
   const double firstDistance = distance(r);

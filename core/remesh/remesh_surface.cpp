@@ -509,6 +509,12 @@ int SurfaceRemeshParams::defaultTargetCount(int vertexCount) {
   return std::max(kMinDefaultTarget, static_cast<int>(kDefaultTargetFraction * vertexCount));
 }
 
+int SurfaceRemeshParams::restartsFor(int outputVertices) const {
+  if (restarts <= 0) return 0;
+  const int scaled = restarts * kRestartVertices / std::max(1, outputVertices);
+  return std::max(restarts, std::min(kMaxRestarts, scaled));
+}
+
 SurfaceRemeshParams SurfaceRemeshParams::adaptive() {
   SurfaceRemeshParams p;
   p.relaxation.iterations = 0;
@@ -791,17 +797,20 @@ Expected<SurfaceRemeshResult> remeshWhole(const TriMesh& input, const Metric& me
   return r;
 }
 
-/// The starts of a small output other than the first, in the order they are judged: the seeds
-/// sampling.seed + 1 .. + restarts, then each seed from the first with the looser relaxation
-/// (restartDeviation).
-std::vector<SurfaceRemeshParams> otherStarts(const SurfaceRemeshParams& p) {
+/// The starts of an output of n vertices other than the first, in the order they are judged: the
+/// seeds sampling.seed + 1 .. + restarts, then the seeds from the first to + restartsFor(n) with
+/// the looser relaxation (restartDeviation), where the other starts of the smallest outputs were
+/// kept; without it, the seeds up to + restartsFor(n).
+std::vector<SurfaceRemeshParams> otherStarts(const SurfaceRemeshParams& p, int n) {
+  const int seeds = p.restartsFor(n);
+  const bool looser = p.restartDeviation > p.relaxation.maxDeviation;
   std::vector<SurfaceRemeshParams> starts;
-  for (int k = 1; k <= p.restarts; ++k) {
+  for (int k = 1; k <= (looser ? p.restarts : seeds); ++k) {
     starts.push_back(p);
     starts.back().sampling.seed = p.sampling.seed + static_cast<unsigned>(k);
   }
-  if (p.restartDeviation > p.relaxation.maxDeviation)
-    for (int k = 0; k <= p.restarts; ++k) {
+  if (looser)
+    for (int k = 0; k <= seeds; ++k) {
       starts.push_back(p);
       starts.back().sampling.seed = p.sampling.seed + static_cast<unsigned>(k);
       starts.back().relaxation.maxDeviation = p.restartDeviation;
@@ -832,7 +841,7 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
   const double firstDistance = distance(r);
   double keptDistance = firstDistance;
   std::optional<SurfaceRemeshResult> kept;
-  const std::vector<SurfaceRemeshParams> starts = otherStarts(p);
+  const std::vector<SurfaceRemeshParams> starts = otherStarts(p, r.mesh.vertexCount());
   for (size_t k = 0; k < starts.size(); ++k) {
     const SurfaceRemeshParams& start = starts[k];
     if (!progress.report(1.0, "Other starts")) return cancelled();  // at the remesh's end: a check only

@@ -121,7 +121,22 @@ struct SurfaceRemeshParams {
   /// man.off, 17,495: 1.3 -> 15.4 s; the data set's small outputs at 5-30% all come from inputs of
   /// at most 1,230). 0 = the first output only.
   /// Not for the adaptive preset, whose outputs are chosen for their distance to the input.
+  /// Smaller outputs get more seeds (restartsFor): a start's sampling costs about one front per
+  /// sample, so restarts * kRestartVertices / n other seeds for an output of n vertices, at most
+  /// kMaxRestarts; the seeds beyond `restarts` run with the looser relaxation only
+  /// (restartDeviation), the one their kept starts had. Over the data set: as good as CGAL on two
+  /// more meshes at 10% (blob 39.0 -> 43.6 degrees, CGAL 39.9; patch-13 31.1 -> 36.7, CGAL 32.6)
+  /// and one at 30% (corner_with_hole), the same at 5%; on the 18 outputs that changed the
+  /// smallest angle rose and the two-sided Hausdorff distance fell or stayed. About twice the
+  /// time on the smallest outputs (best of 3: corner_with_hole at 30%, 4 vertices, 357 -> 831
+  /// ms; joint at 5%, 16 vertices, 1.4 -> 2.9 s), after the surface prepared once for all the
+  /// starts (Prepared in remesh_surface.cpp) had about halved them (corner_with_hole 730 -> 357 ms).
   int restarts = 3;
+  static constexpr int kMaxRestarts = 15;
+  /// The other seeds tried for an output of `outputVertices` vertices: restarts scaled up for
+  /// small outputs (restarts * kRestartVertices / outputVertices, at least restarts, at most
+  /// kMaxRestarts); 0 when restarts is 0.
+  int restartsFor(int outputVertices) const;
   /// Each seed of a small output's starts, the first included, is also run with the relaxation's
   /// maxDeviation raised to this (when larger), as one more start judged by the same rule, and
   /// kept only if also no farther from the input than the output kept so far (so never farther

@@ -763,15 +763,14 @@ void polishOutput(const Prepared& prepared, const SurfaceRemeshParams& params, S
 }
 
 /// An output with more vertices than the input is no remesh (many components and boundary loops
-/// at a small count: boeing.off at 10% needs 5,549 vertices for its 2,741): the input, oriented,
-/// is kept instead, each vertex its own cell. Not for an input with isolated vertices, which an
+/// at a small count: boeing.off at 10% needs 5,549 vertices for its 2,741): the input, oriented
+/// (the prepared copy), is kept instead, each vertex its own cell. Not for an input with isolated vertices, which an
 /// output never has.
-Status keepInputIfSmaller(const TriMesh& input, SurfaceRemeshResult& r) {
-  if (r.mesh.vertexCount() <= input.vertexCount() || input.topology.isolatedVertices > 0) return {};
-  Expected<OrientedSurface> oriented = orientedSurface(input);
-  if (!oriented) return oriented.status();
+void keepInputIfSmaller(const TriMesh& input, const Prepared& prepared, SurfaceRemeshResult& r) {
+  if (r.mesh.vertexCount() <= input.vertexCount() || input.topology.isolatedVertices > 0) return;
+  const std::vector<char>& flipped = prepared.oriented.flipped;
   r.remeshedCount = r.mesh.vertexCount();
-  r.mesh = oriented->copy ? std::move(*oriented->copy) : input;
+  r.mesh = prepared.surface();
   r.origin.resize(input.vertexCount());
   r.cell.resize(input.vertexCount());
   for (int v = 0; v < input.vertexCount(); ++v) {
@@ -779,9 +778,8 @@ Status keepInputIfSmaller(const TriMesh& input, SurfaceRemeshResult& r) {
     r.cell[v] = v;
   }
   r.crossingPairs = static_cast<int>(selfIntersectingFaces(r.mesh).size());
-  r.reorientedFaces = static_cast<int>(std::count(oriented->flipped.begin(), oriented->flipped.end(), 1));
+  r.reorientedFaces = static_cast<int>(std::count(flipped.begin(), flipped.end(), 1));
   r.inputKept = true;
-  return {};
 }
 
 /// One whole remesh: the count search (remeshOnce), the angle rescue, the ears, the polish, and
@@ -793,7 +791,7 @@ Expected<SurfaceRemeshResult> remeshWhole(const TriMesh& input, const Metric& me
   if (Status s = rescueAngles(input, metric, prepared, p, remeshShare, progress, *r); !s) return s;
   removeEars(p, *r);
   polishOutput(prepared, p, *r);
-  if (Status s = keepInputIfSmaller(input, *r); !s) return s;
+  keepInputIfSmaller(input, prepared, *r);
   return r;
 }
 

@@ -816,11 +816,35 @@ std::vector<SurfaceRemeshParams> otherStarts(const SurfaceRemeshParams& p, int n
   return starts;
 }
 
-/// The other starts of a small output (SurfaceRemeshParams::restarts, restartDeviation): `r` is
-/// replaced by the best of them where one is better and no worse in any figure than the first, its
-/// distance to the input included; a start with the looser relaxation must also be no farther from
-/// the input than the output kept so far. A start that fails is passed over; fails only when
-/// cancelled. times.restarts is the wall time of the starts other than the one kept.
+/// A small output's first start with every crease held (RelaxationParams::minCreaseLength 0),
+/// when short creases are not: it replaces `r` as the first start, and `r` is returned, to be
+/// judged as another start (the other seeds hold every crease too). Nothing if it fails (`r`
+/// stays first). Fails only when cancelled.
+Expected<std::optional<SurfaceRemeshResult>> holdEveryCrease(const TriMesh& input, const Metric& metric,
+                                                             Prepared& prepared, const SurfaceRemeshParams& p,
+                                                             SurfaceRemeshResult& r) {
+  if (!(p.relaxation.minCreaseLength > 0)) return std::optional<SurfaceRemeshResult>{};
+  SurfaceRemeshParams held = p;
+  held.relaxation.minCreaseLength = 0;
+  Expected<SurfaceRemeshResult> first = remeshWhole(input, metric, prepared, held, 1.0, Progress{});
+  if (!first) {
+    if (first.status().code == StatusCode::Cancelled) return first.status();
+    return std::optional<SurfaceRemeshResult>{};
+  }
+  std::swap(r, *first);
+  r.keptSeed = first->keptSeed;
+  r.keptDeviation = first->keptDeviation;
+  r.keptCreasesHeld = true;
+  return std::optional<SurfaceRemeshResult>(std::move(*first));
+}
+
+/// The other starts of a small output (SurfaceRemeshParams::restarts, restartDeviation): the first
+/// and the other seeds hold every crease (holdEveryCrease; the output with short creases free is
+/// then the first of the others), and `r` is replaced by the best of the others where one is
+/// better and no worse in any figure than the first, its distance to the input included; a start
+/// with the looser relaxation must also be no farther from the input than the output kept so far.
+/// A start that fails is passed over; fails only when cancelled. times.restarts is the wall time
+/// of the starts other than the one kept.
 Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& prepared, const SurfaceRemeshParams& p,
                           Progress progress, SurfaceRemeshResult& r) {
   r.keptSeed = p.sampling.seed;
@@ -829,6 +853,8 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
       input.vertexCount() > SurfaceRemeshParams::kRestartInputVertices || r.inputKept || r.looksLikeTriangleSoup)
     return {};
   auto clock = std::chrono::steady_clock::now();
+  Expected<std::optional<SurfaceRemeshResult>> freeCreases = holdEveryCrease(input, metric, prepared, p, r);
+  if (!freeCreases) return freeCreases.status();
   const AngleStatistics first = angleStatistics(r.mesh);
   AngleStatistics best = first;
   // Two-sided, at remeshDistances' samples (remesh_distance.h).
@@ -839,11 +865,18 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
   const double firstDistance = distance(r);
   double keptDistance = firstDistance;
   std::optional<SurfaceRemeshResult> kept;
-  const std::vector<SurfaceRemeshParams> starts = otherStarts(p, r.mesh.vertexCount());
+  SurfaceRemeshParams held = p;  // the other seeds hold every crease as the first does
+  if (*freeCreases) held.relaxation.minCreaseLength = 0;
+  std::vector<SurfaceRemeshParams> starts = otherStarts(held, r.mesh.vertexCount());
+  if (*freeCreases) starts.insert(starts.begin(), p);  // judged first: r's own start, short creases free
+  // A swap made the held start's stages the first's, and the free one's among the others.
+  double others = *freeCreases ? (*freeCreases)->times.remesh() - r.times.remesh() : 0.0;
   for (size_t k = 0; k < starts.size(); ++k) {
     const SurfaceRemeshParams& start = starts[k];
     if (!progress.report(1.0, "Other starts")) return cancelled();  // at the remesh's end: a check only
-    Expected<SurfaceRemeshResult> other = remeshWhole(input, metric, prepared, start, 1.0, Progress{});
+    Expected<SurfaceRemeshResult> other = k == 0 && *freeCreases
+                                              ? Expected<SurfaceRemeshResult>(std::move(**freeCreases))
+                                              : remeshWhole(input, metric, prepared, start, 1.0, Progress{});
     if (!other) continue;
     const AngleStatistics a = angleStatistics(other->mesh);
     const bool better = a.shareMinBelow30 < best.shareMinBelow30 ||
@@ -860,8 +893,9 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
     kept->keptStart = static_cast<int>(k) + 1;
     kept->keptSeed = start.sampling.seed;
     kept->keptDeviation = start.relaxation.maxDeviation;
+    kept->keptCreasesHeld = false;
   }
-  double others = lap(clock);
+  others += lap(clock);
   if (kept) {  // the first's stages are now among the others, the kept one's no longer
     others += r.times.remesh() - kept->times.remesh();
     r = std::move(*kept);

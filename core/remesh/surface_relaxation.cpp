@@ -67,9 +67,12 @@ double squaredDistanceToTriangle(const Vec3& p, const Vec3& a, const Vec3& b, co
 class SurfaceWalker {
  public:
   // Everything is computed where the walks go: the cost follows the output, not the input
-  // (apart from one byte per input corner for the blocked-edge cache).
-  SurfaceWalker(const TriMesh& mesh, double featureAngleDegrees)
-      : mesh_(mesh), cosFeature_(std::cos(featureAngleDegrees * kDegree)), blocked_(3 * size_t(mesh.faceCount()), -1) {}
+  // (apart from one byte per input corner for the blocked-edge cache), but for the short creases
+  // (minCreaseLength > 0), found over the whole input once: O(F) (ignoreShortCreases).
+  SurfaceWalker(const TriMesh& mesh, double featureAngleDegrees, double minCreaseLength)
+      : mesh_(mesh), cosFeature_(std::cos(featureAngleDegrees * kDegree)), blocked_(3 * size_t(mesh.faceCount()), -1) {
+    if (minCreaseLength > 0) ignoreShortCreases(minCreaseLength);
+  }
 
   /// Unit normal of an input face (zero for a degenerate face).
   Vec3 normal(int face) const {
@@ -204,6 +207,62 @@ class SurfaceWalker {
     if (o < 0) return true;
     const Vec3 a = areaNormal(mesh_, TriMesh::face(corner)), b = areaNormal(mesh_, TriMesh::face(o));
     return !(a.dot(b) > cosFeature_ * std::sqrt(a.squaredNorm() * b.squaredNorm()));  // also if degenerate
+  }
+
+  /// The crease edges (blocked, not boundaries) per input vertex: (other end, a corner facing the edge).
+  std::vector<std::vector<std::pair<int, int>>> creaseEdges() const {
+    std::vector<std::vector<std::pair<int, int>>> creases(mesh_.vertexCount());
+    for (int c = 0; c < 3 * mesh_.faceCount(); ++c) {
+      const int o = mesh_.oppositeCorner[c];
+      if (o < c || !blocked(c)) continue;  // each interior edge once
+      const int p = mesh_.vertex(TriMesh::next(c)), q = mesh_.vertex(TriMesh::prev(c));
+      creases[p].push_back({q, c});
+      creases[q].push_back({p, c});
+    }
+    return creases;
+  }
+
+  /// RelaxationParams::minCreaseLength: the crease chains (joined at vertices with exactly two
+  /// crease edges where the chain turns by less than the feature angle, as curveNext joins them)
+  /// shorter than minLength are not blocked. Boundaries stay blocked.
+  void ignoreShortCreases(double minLength) {
+    const std::vector<std::vector<std::pair<int, int>>> creases = creaseEdges();
+    const auto after = [&](int v, int from) {  // the chain's vertex after v coming from `from`, or -1
+      if (creases[v].size() != 2) return -1;
+      const int to = creases[v][0].first == from ? creases[v][1].first : creases[v][0].first;
+      const Vec3 in = position(v) - position(from), out = position(to) - position(v);
+      return in.dot(out) > cosFeature_ * in.norm() * out.norm() ? to : -1;
+    };
+    const auto corner = [&](int v, int u) {
+      for (const auto& [w, c] : creases[v])
+        if (w == u) return c;
+      return -1;  // not reached: u is a crease neighbour of v
+    };
+    std::vector<char> done(blocked_.size(), 0);
+    std::vector<int> chain;  // corners of the chain's edges
+    for (int v = 0; v < mesh_.vertexCount(); ++v)
+      for (const auto& [u, c0] : creases[v]) {
+        if (done[c0]) continue;
+        int a = v, b = u;  // back to the chain's first edge (a closed chain: once round)
+        for (int w = after(a, b); w >= 0; w = after(a, b)) {
+          b = a;
+          a = w;
+          if (a == v && b == u) break;
+        }
+        chain.clear();
+        double length = 0;
+        for (int x = a, y = b; y >= 0 && !done[corner(x, y)];) {
+          const int c = corner(x, y);
+          done[c] = 1;
+          chain.push_back(c);
+          length += (position(x) - position(y)).norm();
+          const int z = after(y, x);
+          x = y;
+          y = z;
+        }
+        if (length < minLength)
+          for (int c : chain) blocked_[c] = blocked_[mesh_.oppositeCorner[c]] = 0;
+      }
   }
 
   const TriMesh& mesh_;
@@ -1170,6 +1229,12 @@ Expected<int> flipWithoutCrossing(TriMesh& output, const AngleFlipParams& params
   return 0;
 }
 
+/// The length under which the input's crease chains are not creases (RelaxationParams::
+/// minCreaseLength times the output's mean edge length; 0 with a density).
+double minCreaseLength(const TriMesh& output, const RelaxationParams& params) {
+  return params.density ? 0.0 : params.minCreaseLength * output.meanEdgeLength();
+}
+
 /// Per vertex, 1 if it does not move: a corner of the feature curves, or on one while sliding is off.
 std::vector<char> fixedVertices(const std::vector<Freedom>& freedom, const RelaxationParams& params,
                                 RelaxationResult& r) {
@@ -1195,7 +1260,7 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
     return invalidInput("relaxation: the density needs one value per vertex of the surface");
   if (params.iterations <= 0) return r;
 
-  const SurfaceWalker walker(input, params.featureAngleDegrees);
+  const SurfaceWalker walker(input, params.featureAngleDegrees, minCreaseLength(output, params));
   const std::vector<Freedom> freedom = freedoms(output, points, walker);
   std::vector<char> fixed = fixedVertices(freedom, params, r);
   for (size_t v = 0; v < guard.pinned.size(); ++v) {
@@ -1235,7 +1300,7 @@ Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfaceP
        std::any_of(guard.cell->begin(), guard.cell->end(), [&](int c) { return c < -1 || c >= output.vertexCount(); })))
     return invalidInput("polish: one cell per input vertex is needed, each an output vertex or -1");
   if (params.polishMarginDegrees < 0) return r;
-  const SurfaceWalker walker(input, params.featureAngleDegrees);
+  const SurfaceWalker walker(input, params.featureAngleDegrees, minCreaseLength(output, params));
   const std::vector<Freedom> freedom = freedoms(output, points, walker);
   std::vector<char> fixed = fixedVertices(freedom, params, r);
   for (size_t v = 0; v < pinned.size(); ++v) {

@@ -20,7 +20,8 @@
 // smallest angle is kept, within twice that deviation, or with no limit while an angle under 30
 // degrees remains (raiseSmallestAngle).
 // The input's feature curves (chains of boundary edges and of creases sharper than the feature
-// angle, through vertices with exactly two such edges) hold the vertices on them: such a vertex
+// angle, through vertices with exactly two such edges; crease chains shorter than an output edge,
+// the noise of scans, are not features: minCreaseLength) hold the vertices on them: such a vertex
 // moves only along its curve, by the step (up to 0.4 of its edges' length, both ways) that most
 // raises the smallest angle, while no point of the curve near it ends farther from its faces
 // than maxDeviation (or than before). Vertices where three or more feature edges meet, one ends,
@@ -49,6 +50,13 @@ struct RelaxationParams {
   /// them stay, and walks do not cross them. 60 keeps the creases of CAD parts (fandisk) and lets
   /// the vertices of scans (armadillo: thousands of edges over 30 degrees) move.
   double featureAngleDegrees = 60.0;
+  /// Crease chains of the input (its crease edges joined through vertices with exactly two of
+  /// them, where the chain turns by less than the feature angle) shorter than this times the
+  /// output's mean edge length are not creases: no output edge could follow them, and on scans
+  /// they are noise (femur: 14% of its edges over 60 degrees, in 1,095 chains, none longer than
+  /// two output edges at 10%) that holds vertices in place. Boundaries always hold. 0 = every
+  /// crease holds; so does a relaxation with a density (an adaptive spacing is not one length).
+  double minCreaseLength = 1.0;
   /// A move is refused when the point the vertex leaves ends farther than this times the mean
   /// length of its edges from the new faces around it: tips and ridges, where the farthest-point
   /// samples sit, are not smoothed away (the surface error stays that of the triangulation).

@@ -90,7 +90,9 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgal,
 // corner_tris_with_hole at 30%; and their looser relaxation (restartDeviation): sphere.off,
 // sphere.ply, itemb and ALSTOM_TEST4 at 5%; and the polish's measured valence batches
 // (SurfaceRemeshParams::measuredPolishVertices): knot1 and larger_sphere at 30%; and more starts
-// for the smallest outputs (SurfaceRemeshParams::restartsFor): corner_with_hole at 30%.
+// for the smallest outputs (SurfaceRemeshParams::restartsFor): corner_with_hole at 30%; and the
+// short creases free (RelaxationParams::minCreaseLength): femur at 5% and 30%, knot2 at 5%,
+// b9_mesh at 10% and 30%.
 class RemeshAnglesAgainstCgalAtOtherCounts : public ::testing::TestWithParam<std::pair<std::string, int>> {};
 
 TEST_P(RemeshAnglesAgainstCgalAtOtherCounts, SmallestAngleAndShareUnder30AtLeastAsGood) {
@@ -110,7 +112,10 @@ INSTANTIATE_TEST_SUITE_P(
         std::pair<std::string, int>{"corner_tris_with_hole.off", 30}, std::pair<std::string, int>{"sphere.off", 5},
         std::pair<std::string, int>{"sphere.ply", 5}, std::pair<std::string, int>{"itemb.off", 5},
         std::pair<std::string, int>{"ALSTOM_TEST4.off", 5}, std::pair<std::string, int>{"knot1.off", 30},
-        std::pair<std::string, int>{"larger_sphere.off", 30}, std::pair<std::string, int>{"corner_with_hole.off", 30}),
+        std::pair<std::string, int>{"larger_sphere.off", 30}, std::pair<std::string, int>{"corner_with_hole.off", 30},
+        std::pair<std::string, int>{"femur.off", 5}, std::pair<std::string, int>{"femur.off", 30},
+        std::pair<std::string, int>{"knot2.off", 5}, std::pair<std::string, int>{"b9_mesh.off", 10},
+        std::pair<std::string, int>{"b9_mesh.off", 30}),
     [](const ::testing::TestParamInfo<std::pair<std::string, int>>& p) {
       return test::testNameOfFile(p.param.first) + "_" + std::to_string(p.param.second);
     });
@@ -158,17 +163,25 @@ BeforeAndAfter remeshBeforeAndAfter(const std::string& name, int percent,
   return {input, remeshSurface(input, lessened), remeshSurface(input, params)};
 }
 
+/// The first start of a small output alone: no other starts, every crease held
+/// (RelaxationParams::minCreaseLength 0, as the starts hold them).
+void onlyTheFirstStart(SurfaceRemeshParams& p) {
+  p.restarts = 0;
+  p.relaxation.minCreaseLength = 0;
+}
+
 // The other starts of a small output (SurfaceRemeshParams::restarts): patch-20 at 10% (35
 // vertices) remeshed with them and without; another start is kept, better (33.9 -> 41.4 degrees).
 TEST(RemeshAngles, OtherStartsOfASmallOutputKeepOnlyABetterOne) {
-  const BeforeAndAfter b = remeshBeforeAndAfter("patch-20.off", 10, [](SurfaceRemeshParams& p) { p.restarts = 0; });
+  const BeforeAndAfter b = remeshBeforeAndAfter("patch-20.off", 10, onlyTheFirstStart);
   ASSERT_TRUE(b.before) << b.before.status().message;
   ASSERT_TRUE(b.after) << b.after.status().message;
   EXPECT_EQ(b.before->starts, 1);
   const int n = b.before->mesh.vertexCount();
   const SurfaceRemeshParams defaults;
-  EXPECT_EQ(b.after->starts, 1 + defaults.restarts + 1 + defaults.restartsFor(n))
-      << "the first seeds with both relaxations, the rest with the looser";
+  EXPECT_EQ(b.after->starts, 2 + defaults.restarts + 1 + defaults.restartsFor(n))
+      << "the first seed also with short creases free, the first seeds with both relaxations, the rest with the "
+         "looser";
   EXPECT_GT(b.after->keptStart, 0) << "on this mesh another start is better";
   expectBetterStartKept("patch-20 at 10%", b.input, *b.before, *b.after);
 }
@@ -186,12 +199,13 @@ TEST(RemeshAngles, SmallestOutputsGetMoreStarts) {
   none.restarts = 0;
   EXPECT_EQ(none.restartsFor(4), 0);
 
-  const BeforeAndAfter b = remeshBeforeAndAfter("blob.off", 10, [](SurfaceRemeshParams& p) { p.restarts = 0; });
+  const BeforeAndAfter b = remeshBeforeAndAfter("blob.off", 10, onlyTheFirstStart);
   ASSERT_TRUE(b.before) << b.before.status().message;
   ASSERT_TRUE(b.after) << b.after.status().message;
   const int n = b.before->mesh.vertexCount();
-  EXPECT_EQ(b.after->starts, 1 + defaults.restarts + 1 + defaults.restartsFor(n))
-      << "the first 3 seeds also with the tight relaxation, every seed with the looser";
+  EXPECT_EQ(b.after->starts, 2 + defaults.restarts + 1 + defaults.restartsFor(n))
+      << "the first seed also with short creases free, the first 3 seeds also with the tight relaxation, every "
+         "seed with the looser";
   EXPECT_GT(b.after->keptSeed, defaults.sampling.seed + static_cast<unsigned>(defaults.restarts))
       << "on this mesh a seed beyond the first 3 others is better";
   expectBetterStartKept("blob at 10%", b.input, *b.before, *b.after);
@@ -207,11 +221,45 @@ TEST(RemeshAngles, LooserStartsOfASmallOutputKeepOnlyABetterOne) {
   ASSERT_TRUE(b.after) << b.after.status().message;
   const SurfaceRemeshParams defaults;
   const int n = b.after->mesh.vertexCount();
-  EXPECT_EQ(b.before->starts, 1 + defaults.restartsFor(n)) << "without the looser relaxation, every seed tight";
-  EXPECT_EQ(b.after->starts, 1 + defaults.restarts + 1 + defaults.restartsFor(n));
+  EXPECT_EQ(b.before->starts, 2 + defaults.restartsFor(n))
+      << "without the looser relaxation, every seed tight, and the first with short creases free";
+  EXPECT_EQ(b.after->starts, 2 + defaults.restarts + 1 + defaults.restartsFor(n));
   EXPECT_EQ(b.before->keptDeviation, defaults.relaxation.maxDeviation);
   EXPECT_EQ(b.after->keptDeviation, defaults.restartDeviation) << "on this mesh a looser start is better";
   expectBetterStartKept("sphere.off at 5%", b.input, *b.before, *b.after);
+}
+
+// Short creases free (RelaxationParams::minCreaseLength): femur.off is a scan whose edges are
+// over 60 degrees on 14% of them, in 1,095 chains of one or two edges; held as creases they kept
+// the vertices on them in place. At 10%, with every crease held and with the short ones free
+// (the defaults; no other starts at this size): the smallest angle rises (15.1 -> 27.7 degrees),
+// fewer triangles under 30 degrees, the two-sided distance to the input by the oracle no larger
+// (3.04 -> 2.18% of the diagonal), the count asked for, the input's topology recounted, and no
+// crossing faces (CGAL) where the input has none.
+TEST(RemeshAngles, ShortCreasesOfAScanDoNotHoldVertices) {
+  const BeforeAndAfter b =
+      remeshBeforeAndAfter("femur.off", 10, [](SurfaceRemeshParams& p) { p.relaxation.minCreaseLength = 0; });
+  ASSERT_TRUE(b.before) << b.before.status().message;
+  ASSERT_TRUE(b.after) << b.after.status().message;
+  ASSERT_GT(b.after->mesh.vertexCount(), SurfaceRemeshParams::kRestartVertices);
+  const test::AngleRecount a = test::recountAngles(b.before->mesh), c = test::recountAngles(b.after->mesh);
+  const double diagonal = b.input.boundingBoxDiagonal();
+  const double d0 = oracle::twoSidedDistance(b.before->mesh, b.input).max / diagonal;
+  const double d1 = oracle::twoSidedDistance(b.after->mesh, b.input).max / diagonal;
+  std::printf(
+      "femur at 10%%: every crease held %d vertices, %.2f deg, %.2f %% under 30, Hausdorff %.3f %% | short "
+      "ones free %d, %.2f deg, %.2f %%, %.3f %%\n",
+      b.before->mesh.vertexCount(), a.smallestDegrees, 100 * a.shareBelow30, 100 * d0, b.after->mesh.vertexCount(),
+      c.smallestDegrees, 100 * c.shareBelow30, 100 * d1);
+  EXPECT_GT(c.smallestDegrees, a.smallestDegrees + 5.0);
+  EXPECT_LT(c.shareBelow30, a.shareBelow30);
+  EXPECT_LE(d1, d0);
+  const int asked = b.input.vertexCount() / 10;
+  EXPECT_LE(b.after->mesh.vertexCount(), 1.1 * asked);
+  test::expectValidWithTopologyOf(test::recount(b.after->mesh.triangles, b.after->mesh.vertexCount()),
+                                  test::recount(b.input.triangles, b.input.vertexCount()));
+  ASSERT_TRUE(oracle::selfIntersections(b.input).value().empty());
+  EXPECT_TRUE(oracle::selfIntersections(b.after->mesh).value().empty());
 }
 
 // The polish's measured valence batches (SurfaceRemeshParams::measuredPolishVertices, the

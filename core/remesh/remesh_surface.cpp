@@ -818,7 +818,7 @@ std::vector<SurfaceRemeshParams> otherStarts(const SurfaceRemeshParams& p, int n
 
 /// A small output's first start with every crease held (RelaxationParams::minCreaseLength 0),
 /// when short creases are not: it replaces `r` as the first start, and `r` is returned, to be
-/// judged as another start (the other seeds hold every crease too). Nothing if it fails (`r`
+/// judged as the last of the others (the other seeds hold every crease too). Nothing if it fails (`r`
 /// stays first). Fails only when cancelled.
 Expected<std::optional<SurfaceRemeshResult>> holdEveryCrease(const TriMesh& input, const Metric& metric,
                                                              Prepared& prepared, const SurfaceRemeshParams& p,
@@ -840,7 +840,7 @@ Expected<std::optional<SurfaceRemeshResult>> holdEveryCrease(const TriMesh& inpu
 
 /// The other starts of a small output (SurfaceRemeshParams::restarts, restartDeviation): the first
 /// and the other seeds hold every crease (holdEveryCrease; the output with short creases free is
-/// then the first of the others), and `r` is replaced by the best of the others where one is
+/// then the last of the others), and `r` is replaced by the best of the others where one is
 /// better and no worse in any figure than the first, its distance to the input included; a start
 /// with the looser relaxation must also be no farther from the input than the output kept so far.
 /// A start that fails is passed over; fails only when cancelled. times.restarts is the wall time
@@ -868,13 +868,13 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
   SurfaceRemeshParams held = p;  // the other seeds hold every crease as the first does
   if (*freeCreases) held.relaxation.minCreaseLength = 0;
   std::vector<SurfaceRemeshParams> starts = otherStarts(held, r.mesh.vertexCount());
-  if (*freeCreases) starts.insert(starts.begin(), p);  // judged first: r's own start, short creases free
+  if (*freeCreases) starts.push_back(p);  // judged last: r's own start, short creases free
   // A swap made the held start's stages the first's, and the free one's among the others.
   double others = *freeCreases ? (*freeCreases)->times.remesh() - r.times.remesh() : 0.0;
   for (size_t k = 0; k < starts.size(); ++k) {
     const SurfaceRemeshParams& start = starts[k];
     if (!progress.report(1.0, "Other starts")) return cancelled();  // at the remesh's end: a check only
-    Expected<SurfaceRemeshResult> other = k == 0 && *freeCreases
+    Expected<SurfaceRemeshResult> other = *freeCreases && k + 1 == starts.size()
                                               ? Expected<SurfaceRemeshResult>(std::move(**freeCreases))
                                               : remeshWhole(input, metric, prepared, start, 1.0, Progress{});
     if (!other) continue;
@@ -893,7 +893,7 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
     kept->keptStart = static_cast<int>(k) + 1;
     kept->keptSeed = start.sampling.seed;
     kept->keptDeviation = start.relaxation.maxDeviation;
-    kept->keptCreasesHeld = false;
+    kept->keptCreasesHeld = !(start.relaxation.minCreaseLength > 0);
   }
   others += lap(clock);
   if (kept) {  // the first's stages are now among the others, the kept one's no longer

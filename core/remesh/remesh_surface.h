@@ -134,7 +134,7 @@ struct SurfaceRemeshParams {
   /// The starts hold every crease of the input (RelaxationParams::minCreaseLength 0: at a few
   /// dozen vertices a pig's ears are shorter than an output edge, and freeing them put 34% of
   /// pig's triangles under 30 degrees at 10% instead of 22%); the output with the short creases
-  /// free is one more start, the first judged.
+  /// free is one more start, judged last (so the start the others keep is never refused for it).
   int restarts = 3;
   static constexpr int kMaxRestarts = 15;
   /// The other seeds tried for an output of `outputVertices` vertices: restarts scaled up for

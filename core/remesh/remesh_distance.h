@@ -20,7 +20,8 @@
 // farther), until the next bound is no larger than the largest exact distance found (all the
 // others are below it). If that takes more than kMaxExactQueries samples, the direction is
 // measured by surfaceDistance's grid instead.
-// So `max` is the one-sided Hausdorff distance at the samples, as surfaceDistance gives it, and
+// So `max` is the one-sided Hausdorff distance at the samples, as surfaceDistance gives it (CGAL's
+// exact distances agree to 1e-9; vcglib's grid is off by up to 1.3e-4 of it near slivers), and
 // `rms` is at least surfaceDistance's, where a bound is not exact
 // (tests/remesh/test_remesh_distance.cpp holds 5% on five meshes).
 // Cost: O(samples x neighbourhood) + kMaxExactQueries x F on two threads (the input's vertices on

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <iterator>
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -35,6 +38,26 @@ CgalCalibration calibrateCgalEdgeLength(const SurfaceMesh& input, double n, int 
 TwoSidedDistance twoSidedDistance(const TriMesh& a, const TriMesh& b) {
   const SurfaceDistance there = surfaceDistance(a, b), back = surfaceDistance(b, a);
   return {std::max(there.max, back.max), std::sqrt(0.5 * (there.rms * there.rms + back.rms * back.rms))};
+}
+
+Expected<double> largestDistanceAtSamples(const TriMesh& from, const TriMesh& to, bool midpointsAndCentroids) {
+  Expected<std::unique_ptr<SurfaceMesh>> sm = toSurfaceMesh(to);
+  if (!sm) return sm.status();
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<SurfaceMesh>>>;
+  Tree tree(faces(**sm).first, faces(**sm).second, **sm);
+  tree.accelerate_distance_queries();
+  double largest = 0.0;
+  const auto measure = [&](const Vec3& p) {
+    largest = std::max(largest, std::sqrt(tree.squared_distance(Kernel::Point_3(p.x(), p.y(), p.z()))));
+  };
+  for (const Vec3& p : from.positions) measure(p);
+  if (midpointsAndCentroids)
+    for (const Tri& t : from.triangles) {
+      const Vec3 &a = from.positions[t[0]], &b = from.positions[t[1]], &c = from.positions[t[2]];
+      for (const Vec3& p : {Vec3((a + b + c) / 3.0), Vec3(0.5 * (a + b)), Vec3(0.5 * (b + c)), Vec3(0.5 * (c + a))})
+        measure(p);
+    }
+  return largest;
 }
 
 Expected<std::vector<std::pair<int, int>>> selfIntersections(const TriMesh& mesh) {

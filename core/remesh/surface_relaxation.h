@@ -31,7 +31,8 @@
 // rings' vertices climb by steepest ascent of their smallest angle.
 // Connectivity changes only by the flips: vertices, components, genus and boundaries are kept, and
 // every vertex stays on the input surface (its SurfacePoint is updated).
-// Cost: O(iterations * F_out * (valence + walk length)); the input is read only where walks go.
+// Cost: O(iterations * F_out * (valence + walk length)), and one pass over the input's faces per
+// call for its crease chains (O(F_in); none with minCreaseLength 0 or a density).
 #pragma once
 
 #include <algorithm>

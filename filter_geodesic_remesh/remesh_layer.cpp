@@ -47,6 +47,10 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
                                " removed with flat ears off the boundary (a triangle with two boundary edges and an "
                                "angle under 30 deg, its tip near its base, which the boundary then follows)"
                          : std::string()) +
+      (r.splitVertices > 0 ? ", " + count(r.splitVertices) +
+                                 " added by splitting the edge facing a wide angle of triangles under 30 deg (" +
+                                 count(r.splitRounds) + " rounds)"
+                           : std::string()) +
       "; covering radius " + formatNumber(r.coveringRadius, "%.4g") +
       (commit.weighted ? " (a travel time: distance over speed)" : std::string()) +
       (r.flippedEdges > 0 ? "; " + count(r.flippedEdges) + " edges flipped to Delaunay" : std::string()));

@@ -26,7 +26,9 @@ namespace {
 
 /// Whether the remesh's cells are still the Voronoi cells of its vertices (remeshDistances'
 /// voronoiCells): edge collapses and removed ears merge cells.
-bool cellsAreVoronoi(const SurfaceRemeshResult& r) { return r.collapsedVertices == 0 && r.removedEars == 0; }
+bool cellsAreVoronoi(const SurfaceRemeshResult& r) {
+  return r.collapsedVertices == 0 && r.removedEars == 0 && r.splitVertices == 0;
+}
 
 /// Seconds since `start`, and restarts it.
 double lap(std::chrono::steady_clock::time_point& start) {
@@ -723,41 +725,107 @@ void removeEars(const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
     r.fewestCount = std::min(r.fewestCount, r.mesh.vertexCount());
 }
 
-/// The final output polished (polishOnSurface) on the oriented input. A polish that makes more
-/// of its faces cross is done again with the corners of the crossing faces and their neighbours
-/// pinned, up to kPolishPinRounds times, else not kept. Only after the rescues: their choices
-/// are made on the relaxed outputs.
-void polishOutput(const Prepared& prepared, const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
+/// `mesh` (with its points on the input, `origin`) polished (polishOnSurface) on the oriented
+/// input. A polish that makes more of its faces cross than `crossingPairs` is done again with the
+/// corners of the crossing faces and their neighbours pinned, up to kPolishPinRounds times, else
+/// not kept. Returns the polish kept, if any.
+std::optional<RelaxationResult> polishWithoutCrossing(const Prepared& prepared, const RelaxationParams& relaxation,
+                                                      PolishGuard guard, int crossingPairs, TriMesh& mesh,
+                                                      std::vector<SurfacePoint>& origin) {
   constexpr int kPolishPinRounds = 2;
+  const std::vector<char>& flipped = prepared.oriented.flipped;
+  for (int round = 0; round <= kPolishPinRounds; ++round) {
+    TriMesh polished = mesh;
+    std::vector<SurfacePoint> points = origin;
+    swapFlipped(points, flipped);
+    const Expected<RelaxationResult> done = polishOnSurface(polished, points, prepared.surface(), relaxation, guard);
+    if (!done || done->polishMoves == 0) return std::nullopt;
+    // Without crossings before, only faces the polish changed can cross now.
+    const std::vector<std::pair<int, int>> pairs =
+        crossingPairs == 0 ? crossingsOfFaces(polished, changedFaces(mesh, polished)) : selfIntersectingFaces(polished);
+    if (static_cast<int>(pairs.size()) <= crossingPairs) {
+      swapFlipped(points, flipped);
+      mesh = std::move(polished);
+      origin = std::move(points);
+      return *done;
+    }
+    flagCrossingCorners(polished, pairs, true, guard.pinned);
+  }
+  return std::nullopt;
+}
+
+/// The splits of faces under 30 degrees held by a wide angle (splitWideFaces), each round polished
+/// (polishWithoutCrossing) and kept only if the share of faces under 30 degrees falls, or stays
+/// and the smallest angle rises, neither getting worse, with no more crossing pairs
+/// (SurfaceRemeshParams::splitRounds). As the first polish, no check of the distance to the input
+/// beyond the polish's own (RelaxationParams::maxDeviation).
+void splitAndPolish(const Prepared& prepared, const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
+  const RelaxationParams& relaxation = params.relaxation;
+  if (params.splitRounds <= 0 || relaxation.iterations <= 0 || !relaxation.raiseSmallestAngle ||
+      relaxation.polishMarginDegrees < 0 || r.looksLikeTriangleSoup || r.inputKept)
+    return;
+  auto clock = std::chrono::steady_clock::now();
+  const int count = r.countAsked > 0 ? r.countAsked : r.mesh.vertexCount();
+  const int most = static_cast<int>(SurfaceRemeshParams::kSplitShare * count);
+  const std::vector<char>& flipped = prepared.oriented.flipped;
+  AngleStatistics before = angleStatistics(r.mesh);
+  std::vector<char> refused;  // per face of r.mesh: split in a round not kept
+  for (int round = 0; round < params.splitRounds && before.shareMinBelow30 > 0 && r.splitVertices < most; ++round) {
+    TriMesh mesh = r.mesh;
+    std::vector<SurfacePoint> points = r.origin;
+    swapFlipped(points, flipped);
+    const Expected<int> n =
+        splitWideFaces(mesh, points, prepared.surface(), relaxation, most - r.splitVertices, refused);
+    if (!n || *n == 0) break;
+    const auto refuse = [&] {
+      refused.resize(r.mesh.faceCount(), 0);
+      for (int f = 0; f < r.mesh.faceCount(); ++f) refused[f] |= mesh.triangles[f] != r.mesh.triangles[f];
+    };
+    swapFlipped(points, flipped);
+    PolishGuard guard;
+    guard.voronoiCells = false;
+    if (mesh.vertexCount() <= params.measuredPolishVertices) guard.cell = &r.cell;
+    const int splitPairs = static_cast<int>(selfIntersectingFaces(mesh).size());
+    const std::optional<RelaxationResult> polished =
+        polishWithoutCrossing(prepared, relaxation, guard, std::max(splitPairs, r.crossingPairs), mesh, points);
+    const AngleStatistics a = angleStatistics(mesh);
+    const bool better = a.shareMinBelow30 < before.shareMinBelow30 ||
+                        (a.shareMinBelow30 == before.shareMinBelow30 && a.minDegrees > before.minDegrees);
+    if (!better || a.minDegrees < before.minDegrees ||
+        static_cast<int>(selfIntersectingFaces(mesh).size()) > r.crossingPairs) {
+      refuse();
+      continue;
+    }
+    refused.clear();
+    before = a;
+    r.mesh = std::move(mesh);
+    r.origin = std::move(points);
+    r.splitVertices += *n;
+    ++r.splitRounds;
+    if (polished) {
+      r.relaxation.polishMoves += polished->polishMoves;
+      r.relaxation.flips += polished->flips;
+    }
+  }
+  r.times.relaxation += lap(clock);
+}
+
+/// The final output polished (polishWithoutCrossing). Only after the rescues: their choices are
+/// made on the relaxed outputs.
+void polishOutput(const Prepared& prepared, const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
   const RelaxationParams& relaxation = params.relaxation;
   if (relaxation.iterations <= 0 || !relaxation.raiseSmallestAngle || relaxation.polishMarginDegrees < 0 ||
       r.looksLikeTriangleSoup)
     return;
   auto clock = std::chrono::steady_clock::now();
-  const TriMesh& surface = prepared.surface();
-  const std::vector<char>& flipped = prepared.oriented.flipped;
   PolishGuard guard;  // the cells let the polish measure its distance to the input
   if (r.mesh.vertexCount() <= params.measuredPolishVertices) guard.cell = &r.cell;
   guard.voronoiCells = cellsAreVoronoi(r);
-  for (int round = 0; round <= kPolishPinRounds; ++round) {
-    TriMesh polished = r.mesh;
-    std::vector<SurfacePoint> points = r.origin;
-    swapFlipped(points, flipped);
-    const Expected<RelaxationResult> done = polishOnSurface(polished, points, surface, relaxation, guard);
-    if (!done || done->polishMoves == 0) break;
-    // Without crossings before, only faces the polish changed can cross now.
-    const std::vector<std::pair<int, int>> pairs = r.crossingPairs == 0
-                                                       ? crossingsOfFaces(polished, changedFaces(r.mesh, polished))
-                                                       : selfIntersectingFaces(polished);
-    if (static_cast<int>(pairs.size()) <= r.crossingPairs) {
-      swapFlipped(points, flipped);
-      r.mesh = std::move(polished);
-      r.origin = std::move(points);
-      r.relaxation.polishMoves = done->polishMoves;
-      r.relaxation.flips += done->flips;
-      break;
-    }
-    flagCrossingCorners(polished, pairs, true, guard.pinned);
+  const std::optional<RelaxationResult> done =
+      polishWithoutCrossing(prepared, relaxation, guard, r.crossingPairs, r.mesh, r.origin);
+  if (done) {
+    r.relaxation.polishMoves = done->polishMoves;
+    r.relaxation.flips += done->flips;
   }
   r.times.relaxation += lap(clock);
 }
@@ -920,6 +988,7 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   Expected<SurfaceRemeshResult> r = remeshWhole(input, metric, prepared, p, remeshShare, progress);
   if (!r) return r.status();
   if (Status s = restartSmallOutput(input, metric, prepared, p, progress.sub(0.0, remeshShare), *r); !s) return s;
+  splitAndPolish(prepared, p, *r);
   r->times.prepare += prepared.prepareSeconds;  // once for the call, whatever start was kept
   r->times.engine += prepared.engineSeconds;
   auto clock = std::chrono::steady_clock::now();

@@ -168,6 +168,16 @@ struct SurfaceRemeshParams {
   /// 97 -> 108 ms. On larger outputs, where nothing was kept, they cost a third more (bunny00 at
   /// 10%, 3,775 vertices: 216 -> 290 ms; at 30% 686 -> 940 ms): hence the bound. 0 = never.
   int measuredPolishVertices = 2000;
+  /// Rounds of splits after the polish (and after the starts: a split changes the count the starts
+  /// compare at): faces under 30 degrees whose widest angle is at least kSplitWideAngleDegrees
+  /// (a corner of the input's creases or a boundary vertex holds it: the polish cannot move it)
+  /// have the edge facing it split at the input's point under its middle (splitWideFaces in
+  /// surface_relaxation.h), then the output is polished again; a round is kept only if the share
+  /// of faces under 30 degrees falls, or stays and the smallest angle rises, neither getting worse,
+  /// with no more crossing pairs. At most kSplitShare of the count asked (of the output's count
+  /// without one) is added: outputs of under 20 vertices asked get none. 0 = off.
+  int splitRounds = 4;
+  static constexpr double kSplitShare = 0.05;
   /// Also measure the output: angle statistics and (measureDistance) the surface distance to the
   /// input both ways (the figures of the filters' log).
   bool measure = true;
@@ -245,9 +255,13 @@ struct SurfaceRemeshResult {
   int droppedSamples = 0;       ///< samples inside faces left out (nearest to no vertex)
   /// Vertices removed by edge collapses (edge_collapse.h) to bring an output the count search left
   /// above the count asked for down to it: mesh.vertexCount() = sampledAsked + addedSamples -
-  /// droppedSamples - collapsedVertices - removedEars.
+  /// droppedSamples - collapsedVertices - removedEars + splitVertices.
   int collapsedVertices = 0;
   int removedEars = 0;  ///< flat ears removed off the boundary, each with its tip (removeFlatEars)
+  /// Edges split where faces under 30 degrees were held by a wide angle (splitWideFaces in
+  /// surface_relaxation.h; SurfaceRemeshParams::splitRounds), in splitRounds rounds kept.
+  int splitVertices = 0;
+  int splitRounds = 0;
   int repairRounds = 0;
   /// Of repairRounds, those that added samples where output triangles crossed each other
   /// (DelaunayParams::maxCrossingRounds).

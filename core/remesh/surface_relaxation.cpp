@@ -1354,4 +1354,77 @@ Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfaceP
   return r;
 }
 
+Expected<int> splitWideFaces(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
+                             const RelaxationParams& params, int maxSplits, const std::vector<char>& skip) {
+  if (Status s = checkRelaxationInput(output, points, input); !s) return s;
+  struct Wide {
+    double smallest;  // the face's smallest angle (degrees)
+    int corner;       // its wide corner
+  };
+  std::vector<Wide> wide;
+  for (int f = 0; f < output.faceCount(); ++f) {
+    std::array<double, 3> angle{};
+    for (int k = 0; k < 3; ++k)
+      angle[k] =
+          angleAt(output.positions[output.vertex(3 * f + k)], output.positions[output.vertex(3 * f + (k + 1) % 3)],
+                  output.positions[output.vertex(3 * f + (k + 2) % 3)]) /
+          kDegree;
+    const int k = static_cast<int>(std::max_element(angle.begin(), angle.end()) - angle.begin());
+    const double smallest = *std::min_element(angle.begin(), angle.end());
+    const bool skipped = f < static_cast<int>(skip.size()) && skip[f];
+    if (smallest < 30.0 && angle[k] >= kSplitWideAngleDegrees && output.oppositeCorner[3 * f + k] >= 0 && !skipped)
+      wide.push_back({smallest, 3 * f + k});
+  }
+  std::sort(wide.begin(), wide.end(), [](const Wide& x, const Wide& y) { return x.smallest < y.smallest; });
+  const SurfaceWalker walker(input, params.featureAngleDegrees, minCreaseLength(output, params));
+  std::vector<Vec3> positions = output.positions;
+  std::vector<Tri> triangles = output.triangles;
+  std::vector<char> split(output.faceCount(), 0);  // faces already split
+  int splits = 0;
+  for (const Wide& w : wide) {
+    const int o = output.oppositeCorner[w.corner];
+    const int f = TriMesh::face(w.corner), g = TriMesh::face(o);
+    if (splits >= maxSplits) break;
+    if (split[f] || split[g]) continue;
+    //        c                 c
+    //       / \               /|\        f = (c, a, b) and g = (d, b, a) become
+    //      a---b     ->      a-m-b      (c, a, m), (c, m, b), (d, b, m), (d, m, a)
+    //       \ /               \|/
+    //        d                 d
+    const int c = output.vertex(w.corner), a = output.vertex(TriMesh::next(w.corner));
+    const int b = output.vertex(TriMesh::prev(w.corner)), d = output.vertex(o);
+    if (c == d) continue;  // two faces on the same three vertices
+    // Along the edge, the point whose four faces have the largest smallest angle.
+    SurfacePoint at;
+    double bestCosine = 2;
+    for (const double t : {0.5, 0.4, 0.6, 0.3, 0.7}) {
+      const SurfacePoint q =
+          walker.project((1 - t) * output.positions[a] + t * output.positions[b], walker.faceOf(points[a]));
+      const Vec3 x = walker.pointOf(q.face, q.bary);
+      const Vec3 &pc = output.positions[c], &pa = output.positions[a], &pb = output.positions[b],
+                 &pd = output.positions[d];
+      const double cosine = std::max({smallestAngleCosine(pc, pa, x), smallestAngleCosine(pc, x, pb),
+                                      smallestAngleCosine(pd, pb, x), smallestAngleCosine(pd, x, pa)});
+      if (cosine < bestCosine) {
+        bestCosine = cosine;
+        at = q;
+      }
+    }
+    const int m = static_cast<int>(positions.size());
+    positions.push_back(walker.pointOf(at.face, at.bary));
+    points.push_back(at);
+    triangles[f] = Tri{c, a, m};
+    triangles[g] = Tri{d, b, m};
+    triangles.push_back(Tri{c, m, b});
+    triangles.push_back(Tri{d, m, a});
+    split[f] = split[g] = 1;
+    ++splits;
+  }
+  if (splits == 0) return 0;
+  Expected<TriMesh> done = buildAdjacency(std::move(positions), std::move(triangles));
+  if (!done) return done.status();
+  output = std::move(*done);
+  return splits;
+}
+
 }  // namespace gr

@@ -179,4 +179,22 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
 Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
                                            const RelaxationParams& params = {}, const PolishGuard& guard = {});
 
+/// A face under 30 degrees whose widest angle is at least this (degrees) is one that moves and
+/// flips could not mend: a corner of the input's feature curves or a vertex on a boundary holds its
+/// wide angle (mech-holes-shark at 5%: 5.2 degrees at a hole's rim). Splitting the edge facing the
+/// angle halves it.
+constexpr double kSplitWideAngleDegrees = 100.0;
+
+/// Splits the edge facing the widest angle of each face under 30 degrees whose widest angle is at
+/// least kSplitWideAngleDegrees and whose edge there is not on a boundary, worst faces (smallest
+/// angle) first, up to `maxSplits`, no face split twice: the new vertex goes at the input's point
+/// nearest the edge's middle (a walk from its first vertex's point, not across the input's
+/// creases, as the relaxation's), appended to `output` and `points`; the edge's two faces become
+/// four. Vertices, faces and edges grow by one, two and three per split: components, genus and
+/// boundaries are kept. The faces are not otherwise changed: a polish (polishOnSurface) then
+/// moves the new vertices. Returns how many edges were split. Fails as relaxOnSurface.
+/// Cost: O(F_out log F_out) and one walk per split.
+Expected<int> splitWideFaces(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
+                             const RelaxationParams& params, int maxSplits, const std::vector<char>& skip = {});
+
 }  // namespace gr

@@ -180,8 +180,8 @@ void expectSameTopology(const std::string& label, const TriMesh& m, const Metric
       label.c_str(), 100 * fraction, target, r->addedSamples, r->repairRounds, r->mesh.vertexCount(), out.components,
       input.components, out.genusSum, input.genusSum, out.boundaryLoops, input.boundaryLoops);
   EXPECT_EQ(r->countAsked, target);
-  EXPECT_EQ(r->mesh.vertexCount(),
-            r->sampledAsked + r->addedSamples - r->droppedSamples - r->collapsedVertices - r->removedEars);
+  EXPECT_EQ(r->mesh.vertexCount(), r->sampledAsked + r->addedSamples - r->droppedSamples - r->collapsedVertices -
+                                       r->removedEars + r->splitVertices);
   EXPECT_TRUE(out.manifoldEdges) << label;
   EXPECT_EQ(out.closedManifoldEdges, input.closedManifoldEdges) << label;
   EXPECT_TRUE(out.oriented) << label;

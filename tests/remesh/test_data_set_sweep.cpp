@@ -69,8 +69,8 @@ TEST_P(DataSetSweep, ValidOutputWithTheInputTopologyOrAClearError) {
       EXPECT_EQ(out.vertexCount(), input.vertexCount());
       EXPECT_EQ(out.faceCount(), input.faceCount());
     } else {
-      EXPECT_EQ(out.vertexCount(),
-                r->sampledAsked + r->addedSamples - r->droppedSamples - r->collapsedVertices - r->removedEars);
+      EXPECT_EQ(out.vertexCount(), r->sampledAsked + r->addedSamples - r->droppedSamples - r->collapsedVertices -
+                                       r->removedEars + r->splitVertices);
       EXPECT_LE(r->fewestCount, out.vertexCount());
       EXPECT_LE(out.vertexCount(), input.vertexCount());
     }

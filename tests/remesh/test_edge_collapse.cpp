@@ -113,7 +113,7 @@ void expectTheCountAskedFor(const std::string& name, double fraction, bool adapt
               r.addedSamples, r.collapsedVertices, after->size(), before->size());
   EXPECT_LE(r.mesh.vertexCount(), 1.1 * target);
   EXPECT_EQ(r.mesh.vertexCount(),
-            r.sampledAsked + r.addedSamples - r.droppedSamples - r.collapsedVertices - r.removedEars);
+            r.sampledAsked + r.addedSamples - r.droppedSamples - r.collapsedVertices - r.removedEars + r.splitVertices);
   expectSameTopology(test::recount(r.mesh.triangles, r.mesh.vertexCount()),
                      test::recount(input.triangles, input.vertexCount()));
   EXPECT_LE(after->size(), before->size());

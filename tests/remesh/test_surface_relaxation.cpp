@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -489,6 +490,75 @@ TEST(SurfaceRelaxation, OutputNotOrientedCoherentlyIsRefused) {
   EXPECT_EQ(r.status().code, StatusCode::InvalidInput);
   EXPECT_EQ(out.positions, d.mesh.positions);
   EXPECT_EQ(out.triangles, t);
+}
+
+// splitWideFaces on a flat mesh that is its own input, every vertex on itself: two pairs of faces
+// on a long edge, each with a wide angle facing it (146.6 degrees: smallest 16.7; 157.4: 11.3), a
+// face under 30 degrees whose widest angle is 85.7 (not wide) with a neighbour, and a wide face
+// alone (its long edge on the boundary). Split first: the worse pair (unless skipped), then the
+// other; never the narrow face nor the boundary edge. The new vertex is on the edge (the input, flat, is the
+// plane), where its four faces' smallest angle is largest of the points tried, and its surface
+// point is where it is; faces keep facing up; components, genus and boundary loops are kept,
+// recounted.
+TEST(SurfaceRelaxation, SplitsTheEdgeFacingTheWideAngleOfFacesUnder30) {
+  const std::vector<Vec3> p = {{0, 0, 0},  {2, 0, 0},   {1, 0.3, 0},  {1, -1, 0},     // 0-3: pair, 16.7 deg
+                               {4, 0, 0},  {6, 0, 0},   {5, 0.2, 0},  {5, -1, 0},     // 4-7: pair, 11.3 deg
+                               {8, 0, 0},  {8.3, 0, 0}, {8.15, 2, 0}, {8.15, -2, 0},  // 8-11: narrow
+                               {10, 0, 0}, {12, 0, 0},  {11, 0.3, 0}};                // 12-14: alone
+  const std::vector<Tri> t = {{0, 1, 2}, {1, 0, 3}, {4, 5, 6}, {5, 4, 7}, {8, 9, 10}, {9, 8, 11}, {12, 13, 14}};
+  const TriMesh input = buildTriMesh(p, t).value();
+  const test::Recount before = test::recount(input.triangles, input.vertexCount());
+
+  TriMesh none = input;
+  std::vector<SurfacePoint> nonePoints = onFirstVertices(input.vertexCount());
+  EXPECT_EQ(splitWideFaces(none, nonePoints, input, RelaxationParams{}, 0).value(), 0);
+  EXPECT_EQ(none.triangles, input.triangles);
+
+  TriMesh one = input;
+  std::vector<SurfacePoint> onePoints = onFirstVertices(input.vertexCount());
+  ASSERT_EQ(splitWideFaces(one, onePoints, input, RelaxationParams{}, 1).value(), 1);
+  ASSERT_EQ(one.vertexCount(), input.vertexCount() + 1);
+  EXPECT_NEAR(one.positions.back().y(), 0.0, 1e-12);  // on the edge (4, 5), the worse pair's
+  EXPECT_GT(one.positions.back().x(), 4.5);
+  EXPECT_LT(one.positions.back().x(), 5.5);
+  for (int f : {0, 1, 4, 5, 6}) EXPECT_EQ(one.triangles[f], input.triangles[f]);
+
+  // Faces a caller skips are not split: the other pair goes first.
+  std::vector<char> skip(input.faceCount(), 0);
+  skip[2] = 1;
+  TriMesh skipped = input;
+  std::vector<SurfacePoint> skippedPoints = onFirstVertices(input.vertexCount());
+  ASSERT_EQ(splitWideFaces(skipped, skippedPoints, input, RelaxationParams{}, 1, skip).value(), 1);
+  EXPECT_NEAR(skipped.positions.back().x(), 1.0, 1e-12);
+  for (int f : {2, 3, 4, 5, 6}) EXPECT_EQ(skipped.triangles[f], input.triangles[f]);
+
+  TriMesh out = input;
+  std::vector<SurfacePoint> points = onFirstVertices(input.vertexCount());
+  const int n = input.vertexCount();
+  ASSERT_EQ(splitWideFaces(out, points, input, RelaxationParams{}, 10).value(), 2);
+  ASSERT_EQ(out.vertexCount(), n + 2);
+  ASSERT_EQ(out.faceCount(), input.faceCount() + 4);
+  ASSERT_EQ(points.size(), size_t(n + 2));
+  for (const int f : {4, 5, 6}) EXPECT_EQ(out.triangles[f], input.triangles[f]);         // narrow, alone
+  const std::array<std::pair<int, int>, 2> edges = {std::pair<int, int>{4, 5}, {0, 1}};  // worse pair first
+  for (int k = 0; k < 2; ++k) {
+    const Vec3 &a = p[edges[k].first], &b = p[edges[k].second], &m = out.positions[n + k];
+    EXPECT_NEAR((m - a).cross(b - a).norm(), 0.0, 1e-12);
+    const double along = (m - a).dot(b - a) / (b - a).squaredNorm();
+    EXPECT_GE(along, 0.3 - 1e-12);
+    EXPECT_LE(along, 0.7 + 1e-12);
+    const SurfacePoint& q = points[n + k];
+    ASSERT_GE(q.face, 0);
+    const Tri& on = input.triangles[q.face];
+    const Vec3 there = q.bary[0] * p[on[0]] + q.bary[1] * p[on[1]] + q.bary[2] * p[on[2]];
+    EXPECT_NEAR((there - m).norm(), 0.0, 1e-12);
+    // Of the points tried, the one whose four faces have the largest smallest angle: here (the
+    // pairs are symmetric about x = middle) the middle.
+    EXPECT_NEAR(along, 0.5, 1e-12);
+  }
+  for (const Tri& f : out.triangles)
+    EXPECT_GT((out.positions[f[1]] - out.positions[f[0]]).cross(out.positions[f[2]] - out.positions[f[0]]).z(), 0);
+  test::expectValidWithTopologyOf(test::recount(out.triangles, out.vertexCount()), before);
 }
 
 }  // namespace

@@ -163,6 +163,27 @@ BeforeAndAfter remeshBeforeAndAfter(const std::string& name, int percent,
   return {input, remeshSurface(input, lessened), remeshSurface(input, params)};
 }
 
+/// The angles of b's outputs (recounted) and their two-sided distances to the input (the oracle's,
+/// shares of the input's bounding-box diagonal).
+struct Figures {
+  test::AngleRecount before, after;
+  double distanceBefore = 0.0, distanceAfter = 0.0;
+};
+Figures figuresOf(const BeforeAndAfter& b) {
+  const double diagonal = b.input.boundingBoxDiagonal();
+  return {test::recountAngles(b.before->mesh), test::recountAngles(b.after->mesh),
+          oracle::twoSidedDistance(b.before->mesh, b.input).max / diagonal,
+          oracle::twoSidedDistance(b.after->mesh, b.input).max / diagonal};
+}
+
+/// b's second output has the input's topology (recounted) and, as the input, no crossing faces (CGAL).
+void expectValidWithoutCrossings(const BeforeAndAfter& b) {
+  test::expectValidWithTopologyOf(test::recount(b.after->mesh.triangles, b.after->mesh.vertexCount()),
+                                  test::recount(b.input.triangles, b.input.vertexCount()));
+  ASSERT_TRUE(oracle::selfIntersections(b.input).value().empty());
+  EXPECT_TRUE(oracle::selfIntersections(b.after->mesh).value().empty());
+}
+
 /// The first start of a small output alone: no other starts, every crease held
 /// (RelaxationParams::minCreaseLength 0, as the starts hold them).
 void onlyTheFirstStart(SurfaceRemeshParams& p) {
@@ -242,10 +263,7 @@ TEST(RemeshAngles, ShortCreasesOfAScanDoNotHoldVertices) {
   ASSERT_TRUE(b.before) << b.before.status().message;
   ASSERT_TRUE(b.after) << b.after.status().message;
   ASSERT_GT(b.after->mesh.vertexCount(), SurfaceRemeshParams::kRestartVertices);
-  const test::AngleRecount a = test::recountAngles(b.before->mesh), c = test::recountAngles(b.after->mesh);
-  const double diagonal = b.input.boundingBoxDiagonal();
-  const double d0 = oracle::twoSidedDistance(b.before->mesh, b.input).max / diagonal;
-  const double d1 = oracle::twoSidedDistance(b.after->mesh, b.input).max / diagonal;
+  const auto [a, c, d0, d1] = figuresOf(b);
   std::printf(
       "femur at 10%%: every crease held %d vertices, %.2f deg, %.2f %% under 30, Hausdorff %.3f %% | short "
       "ones free %d, %.2f deg, %.2f %%, %.3f %%\n",
@@ -256,10 +274,7 @@ TEST(RemeshAngles, ShortCreasesOfAScanDoNotHoldVertices) {
   EXPECT_LE(d1, d0);
   const int asked = b.input.vertexCount() / 10;
   EXPECT_LE(b.after->mesh.vertexCount(), 1.1 * asked);
-  test::expectValidWithTopologyOf(test::recount(b.after->mesh.triangles, b.after->mesh.vertexCount()),
-                                  test::recount(b.input.triangles, b.input.vertexCount()));
-  ASSERT_TRUE(oracle::selfIntersections(b.input).value().empty());
-  EXPECT_TRUE(oracle::selfIntersections(b.after->mesh).value().empty());
+  expectValidWithoutCrossings(b);
 }
 
 // The splits of faces under 30 degrees held by a wide angle (SurfaceRemeshParams::splitRounds):
@@ -273,10 +288,7 @@ TEST(RemeshAngles, WideAnglesHeldOnHoleRimsAreSplit) {
       remeshBeforeAndAfter("mech-holes-shark.off", 5, [](SurfaceRemeshParams& p) { p.splitRounds = 0; });
   ASSERT_TRUE(b.before) << b.before.status().message;
   ASSERT_TRUE(b.after) << b.after.status().message;
-  const test::AngleRecount a = test::recountAngles(b.before->mesh), c = test::recountAngles(b.after->mesh);
-  const double diagonal = b.input.boundingBoxDiagonal();
-  const double d0 = oracle::twoSidedDistance(b.before->mesh, b.input).max / diagonal;
-  const double d1 = oracle::twoSidedDistance(b.after->mesh, b.input).max / diagonal;
+  const auto [a, c, d0, d1] = figuresOf(b);
   std::printf(
       "mech-holes-shark at 5%%: no splits %d vertices, %.2f deg, %.2f %% under 30, Hausdorff %.3f %% | %d split in %d "
       "rounds: %d, %.2f deg, %.2f %%, %.3f %%\n",
@@ -290,10 +302,7 @@ TEST(RemeshAngles, WideAnglesHeldOnHoleRimsAreSplit) {
   EXPECT_GT(c.smallestDegrees, a.smallestDegrees + 15.0);
   EXPECT_LT(c.shareBelow30, a.shareBelow30);
   EXPECT_LE(d1, d0);
-  test::expectValidWithTopologyOf(test::recount(b.after->mesh.triangles, b.after->mesh.vertexCount()),
-                                  test::recount(b.input.triangles, b.input.vertexCount()));
-  ASSERT_TRUE(oracle::selfIntersections(b.input).value().empty());
-  EXPECT_TRUE(oracle::selfIntersections(b.after->mesh).value().empty());
+  expectValidWithoutCrossings(b);
 }
 
 // The polish's measured valence batches (SurfaceRemeshParams::measuredPolishVertices, the

@@ -12,6 +12,8 @@ namespace gr::filters {
 namespace {
 
 std::string count(int n) { return std::to_string(n); }
+/// "1 round", "n rounds".
+std::string rounds(int n) { return count(n) + (n == 1 ? " round" : " rounds"); }
 
 /// Faces that ran against their neighbours: the work used an oriented copy.
 void logOrientation(const TriMesh& input, const SurfaceRemeshResult& r, FilterContext& ctx) {
@@ -35,7 +37,7 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
       (r.lloydIterations > 0 ? " moved by " + count(r.lloydIterations) + " geodesic Lloyd iterations (their energy " +
                                    formatNumber(100 * (r.lloydEnergyRatio - 1.0), "%+.1f") + "%)"
                              : std::string()) +
-      ", " + count(r.addedSamples) + " added to make the triangulation valid (" + count(r.repairRounds) + " rounds" +
+      ", " + count(r.addedSamples) + " added to make the triangulation valid (" + rounds(r.repairRounds) +
       (r.crossingRounds > 0 ? ", " + count(r.crossingRounds) + " of them where output triangles crossed"
                             : std::string()) +
       ")" +
@@ -49,7 +51,7 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
                          : std::string()) +
       (r.splitVertices > 0 ? ", " + count(r.splitVertices) +
                                  " added by splitting the edge facing a wide angle of triangles under 30 deg (" +
-                                 count(r.splitRounds) + " rounds)"
+                                 rounds(r.splitRounds) + ")"
                            : std::string()) +
       "; covering radius " + formatNumber(r.coveringRadius, "%.4g") +
       (commit.weighted ? " (a travel time: distance over speed)" : std::string()) +
@@ -112,7 +114,7 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
   const RelaxationResult& relaxed = r.relaxation;
   if (relaxed.iterations > 0)
     ctx.log(
-        "Relaxation on the input surface: " + count(relaxed.iterations) + " rounds, " + count(relaxed.moves) +
+        "Relaxation on the input surface: " + rounds(relaxed.iterations) + ", " + count(relaxed.moves) +
         " vertex moves, " + count(relaxed.flips) + " flips" +
         (relaxed.polishMoves > 0
              ? "; then " + count(relaxed.polishMoves) + " moves of the polish, raising the smallest angles"

@@ -754,6 +754,16 @@ std::optional<RelaxationResult> polishWithoutCrossing(const Prepared& prepared, 
   return std::nullopt;
 }
 
+/// The crossing pairs of `split`, r's mesh with edges split (splitWideFaces: its first faces are
+/// r's, some changed, then the new ones): when r's faces cross nowhere, only those the split
+/// changed can (crossingsOfFaces), else all are counted (selfIntersectingFaces).
+std::vector<std::pair<int, int>> crossingsAfterSplit(const SurfaceRemeshResult& r, const TriMesh& split) {
+  if (r.crossingPairs > 0) return selfIntersectingFaces(split);
+  std::vector<char> changed(split.faceCount(), 1);
+  for (int f = 0; f < r.mesh.faceCount(); ++f) changed[f] = split.triangles[f] != r.mesh.triangles[f];
+  return crossingsOfFaces(split, changed);
+}
+
 /// The splits of faces under 30 degrees held by a wide angle (splitWideFaces), each round polished
 /// (polishWithoutCrossing) and kept only if the share of faces under 30 degrees falls, or stays
 /// and the smallest angle rises, neither getting worse, with no more crossing pairs
@@ -785,14 +795,17 @@ void splitAndPolish(const Prepared& prepared, const SurfaceRemeshParams& params,
     PolishGuard guard;
     guard.voronoiCells = false;
     if (mesh.vertexCount() <= params.measuredPolishVertices) guard.cell = &r.cell;
-    const int splitPairs = static_cast<int>(selfIntersectingFaces(mesh).size());
+    const int splitPairs = static_cast<int>(crossingsAfterSplit(r, mesh).size());
     const std::optional<RelaxationResult> polished =
         polishWithoutCrossing(prepared, relaxation, guard, std::max(splitPairs, r.crossingPairs), mesh, points);
     const AngleStatistics a = angleStatistics(mesh);
     const bool better = a.shareMinBelow30 < before.shareMinBelow30 ||
                         (a.shareMinBelow30 == before.shareMinBelow30 && a.minDegrees > before.minDegrees);
-    if (!better || a.minDegrees < before.minDegrees ||
-        static_cast<int>(selfIntersectingFaces(mesh).size()) > r.crossingPairs) {
+    // The polish keeps the pairs at most max(splitPairs, r.crossingPairs): counted again only
+    // when the split made more.
+    const bool moreCross =
+        splitPairs > r.crossingPairs && static_cast<int>(selfIntersectingFaces(mesh).size()) > r.crossingPairs;
+    if (!better || a.minDegrees < before.minDegrees || moreCross) {
       refuse();
       continue;
     }

@@ -171,7 +171,7 @@ struct SurfaceRemeshParams {
   /// Rounds of splits after the polish (and after the starts: a split changes the count the starts
   /// compare at): faces under 30 degrees whose widest angle is at least kSplitWideAngleDegrees
   /// (a corner of the input's creases or a boundary vertex holds it: the polish cannot move it)
-  /// have the edge facing it split at the input's point under its middle (splitWideFaces in
+  /// have the edge facing it split at a point of the input near it (splitWideFaces in
   /// surface_relaxation.h), then the output is polished again; a round is kept only if the share
   /// of faces under 30 degrees falls, or stays and the smallest angle rises, neither getting worse,
   /// with no more crossing pairs. At most kSplitShare of the count asked (of the output's count

@@ -187,13 +187,15 @@ constexpr double kSplitWideAngleDegrees = 100.0;
 
 /// Splits the edge facing the widest angle of each face under 30 degrees whose widest angle is at
 /// least kSplitWideAngleDegrees and whose edge there is not on a boundary, worst faces (smallest
-/// angle) first, up to `maxSplits`, no face split twice: the new vertex goes at the input's point
-/// nearest the edge's middle (a walk from its first vertex's point, not across the input's
-/// creases, as the relaxation's), appended to `output` and `points`; the edge's two faces become
-/// four. Vertices, faces and edges grow by one, two and three per split: components, genus and
+/// angle) first, up to `maxSplits`, no face split twice, none flagged in `skip` (empty, or per
+/// face of `output`): the new vertex goes at the input's point nearest one of five points of the
+/// edge (0.3 to 0.7 of it; a walk from its first vertex's point, not across the input's creases,
+/// as the relaxation's), the one whose four faces have the largest smallest angle, appended to
+/// `output` and `points`; the edge's two faces become four (the first `output` faces keep their
+/// places, the new ones follow). Vertices, faces and edges grow by one, two and three per split: components, genus and
 /// boundaries are kept. The faces are not otherwise changed: a polish (polishOnSurface) then
 /// moves the new vertices. Returns how many edges were split. Fails as relaxOnSurface.
-/// Cost: O(F_out log F_out) and one walk per split.
+/// Cost: O(F_out log F_out) and five walks per split.
 Expected<int> splitWideFaces(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
                              const RelaxationParams& params, int maxSplits, const std::vector<char>& skip = {});
 

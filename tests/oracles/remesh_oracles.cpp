@@ -29,6 +29,10 @@ CgalCalibration calibrateCgalEdgeLength(const SurfaceMesh& input, double n, int 
     cgalIsotropicRemeshing(m, c.edgeLength, iterations);
     ++c.runs;
     const double obtained = m.number_of_vertices();
+    if (c.closestVertices == 0 || std::abs(obtained - n) < std::abs(c.closestVertices - n)) {
+      c.closestEdgeLength = c.edgeLength;
+      c.closestVertices = static_cast<int>(obtained);
+    }
     if (std::abs(obtained / n - 1.0) <= tolerance) break;
     c.edgeLength *= std::sqrt(obtained / n);
   }

@@ -20,10 +20,14 @@ void cgalIsotropicRemeshing(SurfaceMesh& mesh, double edgeLength, int iterations
 /// The target edge length for which CGAL's isotropic remeshing gives about `n` vertices: from
 /// L = sqrt(2 A / (sqrt(3) n)) (equilateral triangles of area A / (2n)), then up to `maxRuns`
 /// runs on copies of `input`, each followed by L *= sqrt(n_obtained / n), stopping within
-/// `tolerance` (relative).
+/// `tolerance` (relative). edgeLength is the last estimate (run or not); closestEdgeLength the
+/// length of the run whose count, closestVertices, came nearest n (on small outputs the estimates
+/// swing round n: ellipsoid.off at 8 vertices gave 10, 6, ... before 8).
 struct CgalCalibration {
   double edgeLength = 0.0;
   int runs = 0;
+  double closestEdgeLength = 0.0;
+  int closestVertices = 0;
 };
 CgalCalibration calibrateCgalEdgeLength(const SurfaceMesh& input, double n, int iterations, int maxRuns,
                                         double tolerance);

@@ -764,28 +764,23 @@ std::vector<std::pair<int, int>> crossingsAfterSplit(const SurfaceRemeshResult& 
   return crossingsOfFaces(split, changed);
 }
 
-/// The splits of faces under 30 degrees held by a wide angle (splitWideFaces), each round polished
+/// Up to SurfaceRemeshParams::splitRounds rounds of splits of the edges of kind `edges` facing
+/// the wide angles of faces under 30 degrees (splitWideFaces), each polished
 /// (polishWithoutCrossing) and kept only if the share of faces under 30 degrees falls, or stays
-/// and the smallest angle rises, neither getting worse, with no more crossing pairs
-/// (SurfaceRemeshParams::splitRounds). As the first polish, no check of the distance to the input
-/// beyond the polish's own (RelaxationParams::maxDeviation).
-void splitAndPolish(const Prepared& prepared, const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
+/// and the smallest angle rises, neither getting worse against `before` (r's angles, updated),
+/// with no more crossing pairs; at most `most` split vertices in all. Faces split in a round not
+/// kept are not tried again until one is kept.
+void runSplitRounds(const Prepared& prepared, const SurfaceRemeshParams& params, SplitEdges edges, int most,
+                    AngleStatistics& before, SurfaceRemeshResult& r) {
   const RelaxationParams& relaxation = params.relaxation;
-  if (params.splitRounds <= 0 || relaxation.iterations <= 0 || !relaxation.raiseSmallestAngle ||
-      relaxation.polishMarginDegrees < 0 || r.looksLikeTriangleSoup || r.inputKept)
-    return;
-  auto clock = std::chrono::steady_clock::now();
-  const int count = r.countAsked > 0 ? r.countAsked : r.mesh.vertexCount();
-  const int most = static_cast<int>(SurfaceRemeshParams::kSplitShare * count);
   const std::vector<char>& flipped = prepared.oriented.flipped;
-  AngleStatistics before = angleStatistics(r.mesh);
   std::vector<char> refused;  // per face of r.mesh: split in a round not kept
   for (int round = 0; round < params.splitRounds && before.shareMinBelow30 > 0 && r.splitVertices < most; ++round) {
     TriMesh mesh = r.mesh;
     std::vector<SurfacePoint> points = r.origin;
     swapFlipped(points, flipped);
     const Expected<int> n =
-        splitWideFaces(mesh, points, prepared.surface(), relaxation, most - r.splitVertices, refused);
+        splitWideFaces(mesh, points, prepared.surface(), relaxation, most - r.splitVertices, refused, edges);
     if (!n || *n == 0) break;
     const auto refuse = [&] {
       refused.resize(r.mesh.faceCount(), 0);
@@ -820,6 +815,24 @@ void splitAndPolish(const Prepared& prepared, const SurfaceRemeshParams& params,
       r.relaxation.flips += polished->flips;
     }
   }
+}
+
+/// The splits of faces under 30 degrees held by a wide angle (SurfaceRemeshParams::splitRounds):
+/// rounds of inner edges' splits (runSplitRounds), then rounds of boundary edges' splits, which
+/// start from what the inner ones reached, so that they only ever improve on it. At most
+/// kSplitShare of the count asked in all. As the first polish, no check of the distance to the
+/// input beyond the polish's own (RelaxationParams::maxDeviation).
+void splitAndPolish(const Prepared& prepared, const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
+  const RelaxationParams& relaxation = params.relaxation;
+  if (params.splitRounds <= 0 || relaxation.iterations <= 0 || !relaxation.raiseSmallestAngle ||
+      relaxation.polishMarginDegrees < 0 || r.looksLikeTriangleSoup || r.inputKept)
+    return;
+  auto clock = std::chrono::steady_clock::now();
+  const int count = r.countAsked > 0 ? r.countAsked : r.mesh.vertexCount();
+  const int most = static_cast<int>(SurfaceRemeshParams::kSplitShare * count);
+  AngleStatistics before = angleStatistics(r.mesh);
+  for (const SplitEdges edges : {SplitEdges::Inner, SplitEdges::Boundary})
+    runSplitRounds(prepared, params, edges, most, before, r);
   r.times.relaxation += lap(clock);
 }
 

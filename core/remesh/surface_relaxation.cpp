@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <string>
 
@@ -1235,6 +1236,117 @@ double minCreaseLength(const TriMesh& output, const RelaxationParams& params) {
   return params.density ? 0.0 : params.minCreaseLength * output.meanEdgeLength();
 }
 
+/// Whether u and w are joined by a boundary edge of `mesh`.
+bool onBoundaryEdge(const TriMesh& mesh, int u, int w) {
+  for (const int* c = mesh.cornersBegin(u); c != mesh.cornersEnd(u); ++c) {
+    if (mesh.vertex(TriMesh::next(*c)) == w && mesh.oppositeCorner[TriMesh::prev(*c)] < 0) return true;
+    if (mesh.vertex(TriMesh::prev(*c)) == w && mesh.oppositeCorner[TriMesh::next(*c)] < 0) return true;
+  }
+  return false;
+}
+
+/// The ways along the input's boundary from p: one per boundary edge at p's vertex, or both ways
+/// along the boundary edge p lies on; none for a point inside a face or on an inner edge.
+std::vector<CurvePoint> boundaryWaysFrom(const SurfacePoint& p, const TriMesh& input) {
+  std::vector<CurvePoint> ways;
+  int v = p.vertex;
+  if (v < 0) {
+    const Tri& t = input.triangles[p.face];
+    const int zeros = (p.bary[0] == 0) + (p.bary[1] == 0) + (p.bary[2] == 0);
+    if (zeros == 0) return ways;
+    if (zeros == 1) {  // on the edge facing the zero coordinate
+      const int k = p.bary[0] == 0 ? 0 : p.bary[1] == 0 ? 1 : 2;
+      const int a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      if (input.oppositeCorner[3 * p.face + k] < 0) ways = {{a, b, p.bary[(k + 2) % 3]}, {b, a, p.bary[(k + 1) % 3]}};
+      return ways;
+    }
+    v = t[p.bary[0] != 0 ? 0 : p.bary[1] != 0 ? 1 : 2];  // at a corner of the face
+  }
+  for (const int* c = input.cornersBegin(v); c != input.cornersEnd(v); ++c) {
+    if (input.oppositeCorner[TriMesh::prev(*c)] < 0) ways.push_back({v, input.vertex(TriMesh::next(*c)), 0.0});
+    if (input.oppositeCorner[TriMesh::next(*c)] < 0) ways.push_back({v, input.vertex(TriMesh::prev(*c)), 0.0});
+  }
+  return ways;
+}
+
+/// The point of the input's boundary at arc length s from p along one of its ways (slide, which
+/// stops at corners of the feature curves) nearest `aim`, if on a boundary edge and within
+/// `tolerance` of aim.
+std::optional<SurfacePoint> alongBoundary(const SurfacePoint& p, double s, const Vec3& aim, double tolerance,
+                                          const SurfaceWalker& walker) {
+  std::optional<SurfacePoint> best;
+  double nearest = tolerance;
+  for (const CurvePoint& way : boundaryWaysFrom(p, walker.mesh())) {
+    const CurvePoint to = slide(way, s, walker);
+    if (!onBoundaryEdge(walker.mesh(), to.a, to.b)) continue;
+    const SurfacePoint q = walker.onInputEdge(to.a, to.b, to.t);
+    const double d = (walker.pointOf(q.face, q.bary) - aim).norm();
+    if (d <= nearest) {
+      nearest = d;
+      best = q;
+    }
+  }
+  return best;
+}
+
+/// A face under 30 degrees held by a wide angle: its smallest angle (degrees) and its wide corner.
+struct WideFace {
+  double smallest;
+  int corner;
+};
+
+/// The faces of `output` under 30 degrees whose widest angle is at least kSplitWideAngleDegrees
+/// and faces an edge of the kind asked for, none flagged in `skip`, worst (smallest angle) first.
+std::vector<WideFace> wideFaces(const TriMesh& output, const std::vector<char>& skip, SplitEdges edges) {
+  std::vector<WideFace> wide;
+  for (int f = 0; f < output.faceCount(); ++f) {
+    std::array<double, 3> angle{};
+    for (int k = 0; k < 3; ++k)
+      angle[k] =
+          angleAt(output.positions[output.vertex(3 * f + k)], output.positions[output.vertex(3 * f + (k + 1) % 3)],
+                  output.positions[output.vertex(3 * f + (k + 2) % 3)]) /
+          kDegree;
+    const int k = static_cast<int>(std::max_element(angle.begin(), angle.end()) - angle.begin());
+    const double smallest = *std::min_element(angle.begin(), angle.end());
+    const bool skipped = f < static_cast<int>(skip.size()) && skip[f];
+    const bool inner = output.oppositeCorner[3 * f + k] >= 0;
+    if (smallest < 30.0 && angle[k] >= kSplitWideAngleDegrees && inner == (edges == SplitEdges::Inner) && !skipped)
+      wide.push_back({smallest, 3 * f + k});
+  }
+  std::sort(wide.begin(), wide.end(), [](const WideFace& x, const WideFace& y) { return x.smallest < y.smallest; });
+  return wide;
+}
+
+/// Where the edge (a, b) of `output`, facing c in one face and d in the other (d < 0: a boundary
+/// edge), is split: of five points of the edge (0.3 to 0.7 of it), the one whose new faces have the
+/// largest smallest angle, each taken on the input: the point nearest it by a walk from a's point
+/// (as the relaxation's) or, on a boundary edge, the point of the input's boundary as far along
+/// it from a's point (alongBoundary; none if no such point lies within a quarter of the edge).
+std::optional<SurfacePoint> splitPoint(const TriMesh& output, const std::vector<SurfacePoint>& points,
+                                       const SurfaceWalker& walker, int c, int a, int b, int d) {
+  const Vec3 &pc = output.positions[c], &pa = output.positions[a], &pb = output.positions[b];
+  const double length = (pb - pa).norm();
+  std::optional<SurfacePoint> at;
+  double bestCosine = 2;
+  for (const double t : {0.5, 0.4, 0.6, 0.3, 0.7}) {
+    const Vec3 aim = (1 - t) * pa + t * pb;
+    const std::optional<SurfacePoint> q = d >= 0 ? walker.project(aim, walker.faceOf(points[a]))
+                                                 : alongBoundary(points[a], t * length, aim, 0.25 * length, walker);
+    if (!q) continue;
+    const Vec3 x = walker.pointOf(q->face, q->bary);
+    double cosine = std::max(smallestAngleCosine(pc, pa, x), smallestAngleCosine(pc, x, pb));
+    if (d >= 0) {
+      const Vec3& pd = output.positions[d];
+      cosine = std::max({cosine, smallestAngleCosine(pd, pb, x), smallestAngleCosine(pd, x, pa)});
+    }
+    if (cosine < bestCosine) {
+      bestCosine = cosine;
+      at = q;
+    }
+  }
+  return at;
+}
+
 /// Per vertex, 1 if it does not move: a corner of the feature curves, or on one while sliding is off.
 std::vector<char> fixedVertices(const std::vector<Freedom>& freedom, const RelaxationParams& params,
                                 RelaxationResult& r) {
@@ -1355,69 +1467,41 @@ Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfaceP
 }
 
 Expected<int> splitWideFaces(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
-                             const RelaxationParams& params, int maxSplits, const std::vector<char>& skip) {
+                             const RelaxationParams& params, int maxSplits, const std::vector<char>& skip,
+                             SplitEdges edges) {
   if (Status s = checkRelaxationInput(output, points, input); !s) return s;
-  struct Wide {
-    double smallest;  // the face's smallest angle (degrees)
-    int corner;       // its wide corner
-  };
-  std::vector<Wide> wide;
-  for (int f = 0; f < output.faceCount(); ++f) {
-    std::array<double, 3> angle{};
-    for (int k = 0; k < 3; ++k)
-      angle[k] =
-          angleAt(output.positions[output.vertex(3 * f + k)], output.positions[output.vertex(3 * f + (k + 1) % 3)],
-                  output.positions[output.vertex(3 * f + (k + 2) % 3)]) /
-          kDegree;
-    const int k = static_cast<int>(std::max_element(angle.begin(), angle.end()) - angle.begin());
-    const double smallest = *std::min_element(angle.begin(), angle.end());
-    const bool skipped = f < static_cast<int>(skip.size()) && skip[f];
-    if (smallest < 30.0 && angle[k] >= kSplitWideAngleDegrees && output.oppositeCorner[3 * f + k] >= 0 && !skipped)
-      wide.push_back({smallest, 3 * f + k});
-  }
-  std::sort(wide.begin(), wide.end(), [](const Wide& x, const Wide& y) { return x.smallest < y.smallest; });
+  const std::vector<WideFace> wide = wideFaces(output, skip, edges);
   const SurfaceWalker walker(input, params.featureAngleDegrees, minCreaseLength(output, params));
   std::vector<Vec3> positions = output.positions;
   std::vector<Tri> triangles = output.triangles;
   std::vector<char> split(output.faceCount(), 0);  // faces already split
   int splits = 0;
-  for (const Wide& w : wide) {
-    const int o = output.oppositeCorner[w.corner];
-    const int f = TriMesh::face(w.corner), g = TriMesh::face(o);
+  for (const WideFace& w : wide) {
     if (splits >= maxSplits) break;
-    if (split[f] || split[g]) continue;
+    const int o = output.oppositeCorner[w.corner];
+    const int f = TriMesh::face(w.corner), g = o >= 0 ? TriMesh::face(o) : -1;
+    if (split[f] || (g >= 0 && split[g])) continue;
     //        c                 c
     //       / \               /|\        f = (c, a, b) and g = (d, b, a) become
-    //      a---b     ->      a-m-b      (c, a, m), (c, m, b), (d, b, m), (d, m, a)
-    //       \ /               \|/
+    //      a---b     ->      a-m-b      (c, a, m), (c, m, b), (d, b, m), (d, m, a);
+    //       \ /               \|/        on a boundary edge (no g), f only
     //        d                 d
     const int c = output.vertex(w.corner), a = output.vertex(TriMesh::next(w.corner));
-    const int b = output.vertex(TriMesh::prev(w.corner)), d = output.vertex(o);
+    const int b = output.vertex(TriMesh::prev(w.corner)), d = o >= 0 ? output.vertex(o) : -1;
     if (c == d) continue;  // two faces on the same three vertices
-    // Along the edge, the point whose four faces have the largest smallest angle.
-    SurfacePoint at;
-    double bestCosine = 2;
-    for (const double t : {0.5, 0.4, 0.6, 0.3, 0.7}) {
-      const SurfacePoint q =
-          walker.project((1 - t) * output.positions[a] + t * output.positions[b], walker.faceOf(points[a]));
-      const Vec3 x = walker.pointOf(q.face, q.bary);
-      const Vec3 &pc = output.positions[c], &pa = output.positions[a], &pb = output.positions[b],
-                 &pd = output.positions[d];
-      const double cosine = std::max({smallestAngleCosine(pc, pa, x), smallestAngleCosine(pc, x, pb),
-                                      smallestAngleCosine(pd, pb, x), smallestAngleCosine(pd, x, pa)});
-      if (cosine < bestCosine) {
-        bestCosine = cosine;
-        at = q;
-      }
-    }
+    const std::optional<SurfacePoint> at = splitPoint(output, points, walker, c, a, b, d);
+    if (!at) continue;
     const int m = static_cast<int>(positions.size());
-    positions.push_back(walker.pointOf(at.face, at.bary));
-    points.push_back(at);
+    positions.push_back(walker.pointOf(at->face, at->bary));
+    points.push_back(*at);
     triangles[f] = Tri{c, a, m};
-    triangles[g] = Tri{d, b, m};
     triangles.push_back(Tri{c, m, b});
-    triangles.push_back(Tri{d, m, a});
-    split[f] = split[g] = 1;
+    split[f] = 1;
+    if (g >= 0) {
+      triangles[g] = Tri{d, b, m};
+      triangles.push_back(Tri{d, m, a});
+      split[g] = 1;
+    }
     ++splits;
   }
   if (splits == 0) return 0;

@@ -185,18 +185,26 @@ Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfaceP
 /// angle halves it.
 constexpr double kSplitWideAngleDegrees = 100.0;
 
+/// Which edges splitWideFaces splits: inner edges, or edges of the output's boundary.
+enum class SplitEdges { Inner, Boundary };
+
 /// Splits the edge facing the widest angle of each face under 30 degrees whose widest angle is at
-/// least kSplitWideAngleDegrees and whose edge there is not on a boundary, worst faces (smallest
+/// least kSplitWideAngleDegrees and whose edge there is of the kind `edges`, worst faces (smallest
 /// angle) first, up to `maxSplits`, no face split twice, none flagged in `skip` (empty, or per
-/// face of `output`): the new vertex goes at the input's point nearest one of five points of the
-/// edge (0.3 to 0.7 of it; a walk from its first vertex's point, not across the input's creases,
-/// as the relaxation's), the one whose four faces have the largest smallest angle, appended to
-/// `output` and `points`; the edge's two faces become four (the first `output` faces keep their
-/// places, the new ones follow). Vertices, faces and edges grow by one, two and three per split: components, genus and
-/// boundaries are kept. The faces are not otherwise changed: a polish (polishOnSurface) then
-/// moves the new vertices. Returns how many edges were split. Fails as relaxOnSurface.
-/// Cost: O(F_out log F_out) and five walks per split.
+/// face of `output`). The new vertex goes at one of five points of the edge (0.3 to 0.7 of it), the
+/// one whose new faces have the largest smallest angle, taken on the input: an inner edge's point
+/// is the input's point nearest it by a walk from its first vertex's point, not across the input's
+/// creases (as the relaxation's); a boundary edge's is the point of the input's boundary the same
+/// arc length along it from the first vertex's point (none if that is not within a quarter of the
+/// edge of it: the face is left as it is). The vertex is appended to `output` and `points`; an
+/// inner edge's two faces become four, a boundary edge's one face two (the first `output` faces
+/// keep their places, the new ones follow). Vertices, faces and edges grow by one, two and three
+/// per inner split, by one, one and two per boundary split: components, genus and boundary loops
+/// are kept. The faces are not otherwise changed: a polish (polishOnSurface) then moves the new
+/// vertices. Returns how many edges were split. Fails as relaxOnSurface.
+/// Cost: O(F_out log F_out) and five walks (or slides along the boundary) per split.
 Expected<int> splitWideFaces(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
-                             const RelaxationParams& params, int maxSplits, const std::vector<char>& skip = {});
+                             const RelaxationParams& params, int maxSplits, const std::vector<char>& skip = {},
+                             SplitEdges edges = SplitEdges::Inner);
 
 }  // namespace gr

@@ -561,5 +561,52 @@ TEST(SurfaceRelaxation, SplitsTheEdgeFacingTheWideAngleOfFacesUnder30) {
   test::expectValidWithTopologyOf(test::recount(out.triangles, out.vertexCount()), before);
 }
 
+// Boundary edges (SplitEdges::Boundary): a face of 16.7 degrees whose 146.6-degree angle faces
+// an edge of the output's boundary, over an input whose boundary bulges away from that edge (a
+// polyline of four input edges). The new vertex lies on the input's boundary, not on the chord:
+// a point of a boundary edge of the input, evaluating to its position; the face becomes two, both
+// facing up; the topology is recounted the same. Inner edges only (the default) split nothing here.
+TEST(SurfaceRelaxation, SplitsABoundaryEdgeOnTheInputsBoundary) {
+  std::vector<Vec3> p;
+  for (int i = 0; i <= 4; ++i) {
+    const double x = 10 + 0.5 * i;
+    p.push_back({x, -0.1 * (1 - (x - 11) * (x - 11)), 0});  // the arc, 0 at its ends, -0.1 at x = 11
+  }
+  p.push_back({11, 0.3, 0});  // 5: the apex
+  const std::vector<Tri> fan = {{0, 1, 5}, {1, 2, 5}, {2, 3, 5}, {3, 4, 5}};
+  const TriMesh input = buildTriMesh(p, fan).value();
+  const TriMesh face = buildTriMesh({p[0], p[4], p[5]}, {{0, 1, 2}}).value();
+  const std::vector<SurfacePoint> on = {SurfacePoint::atVertex(0), SurfacePoint::atVertex(4),
+                                        SurfacePoint::atVertex(5)};
+  const test::Recount before = test::recount(face.triangles, face.vertexCount());
+
+  TriMesh inner = face;
+  std::vector<SurfacePoint> innerPoints = on;
+  EXPECT_EQ(splitWideFaces(inner, innerPoints, input, RelaxationParams{}, 10).value(), 0);
+  EXPECT_EQ(inner.triangles, face.triangles);
+
+  TriMesh out = face;
+  std::vector<SurfacePoint> points = on;
+  ASSERT_EQ(splitWideFaces(out, points, input, RelaxationParams{}, 10, {}, SplitEdges::Boundary).value(), 1);
+  ASSERT_EQ(out.vertexCount(), 4);
+  ASSERT_EQ(out.faceCount(), 2);
+  ASSERT_EQ(points.size(), size_t(4));
+  const Vec3& m = out.positions[3];
+  const SurfacePoint& q = points[3];
+  ASSERT_GE(q.face, 0);
+  const int zeros = (q.bary[0] == 0) + (q.bary[1] == 0) + (q.bary[2] == 0);
+  ASSERT_GE(zeros, 1);
+  const int k = q.bary[0] == 0 ? 0 : q.bary[1] == 0 ? 1 : 2;
+  EXPECT_LT(input.oppositeCorner[3 * q.face + k], 0);  // the edge it lies on is a boundary edge
+  const Tri& t = input.triangles[q.face];
+  EXPECT_NEAR((q.bary[0] * p[t[0]] + q.bary[1] * p[t[1]] + q.bary[2] * p[t[2]] - m).norm(), 0.0, 1e-12);
+  EXPECT_LT(m.y(), -0.05);  // on the bulge, off the chord y = 0
+  EXPECT_GT(m.x(), 10.5);
+  EXPECT_LT(m.x(), 11.5);
+  for (const Tri& f : out.triangles)
+    EXPECT_GT((out.positions[f[1]] - out.positions[f[0]]).cross(out.positions[f[2]] - out.positions[f[0]]).z(), 0);
+  test::expectValidWithTopologyOf(test::recount(out.triangles, out.vertexCount()), before);
+}
+
 }  // namespace
 }  // namespace gr

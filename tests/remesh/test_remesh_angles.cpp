@@ -286,59 +286,43 @@ TEST(RemeshAngles, ShortCreasesOfAScanDoNotHoldVertices) {
   expectValidWithoutCrossings(b);
 }
 
-// The splits of faces under 30 degrees held by a wide angle (SurfaceRemeshParams::splitRounds):
-// mech-holes-shark at 5% remeshed without and with them. Vertices on the rims of its holes hold
-// wide angles the polish cannot mend (5.2 degrees); with the splits the smallest angle is more
-// than 15 degrees higher and fewer faces are under 30, the output has the vertices added (at most
-// kSplitShare of the count asked) and no more, the two-sided distance to the input (the oracle's)
-// is no larger, the input's topology is kept (recounted), no faces cross (CGAL).
-TEST(RemeshAngles, WideAnglesHeldOnHoleRimsAreSplit) {
-  const BeforeAndAfter b =
-      remeshBeforeAndAfter("mech-holes-shark.off", 5, [](SurfaceRemeshParams& p) { p.splitRounds = 0; });
+/// `name` at `percent` remeshed without splits (splitRounds 0) and with them: vertices split in
+/// (at most kSplitShare of the count asked) and no more, the smallest angle more than `gain`
+/// degrees higher, fewer faces under 30, the two-sided distance to the input (the oracle's) no
+/// larger, the input's topology kept (recounted), no faces crossing (CGAL).
+void expectSplitsMendTheAngles(const std::string& name, int percent, double gain) {
+  const BeforeAndAfter b = remeshBeforeAndAfter(name, percent, [](SurfaceRemeshParams& p) { p.splitRounds = 0; });
   ASSERT_TRUE(b.before) << b.before.status().message;
   ASSERT_TRUE(b.after) << b.after.status().message;
   const auto [a, c, d0, d1] = figuresOf(b);
   std::printf(
-      "mech-holes-shark at 5%%: no splits %d vertices, %.2f deg, %.2f %% under 30, Hausdorff %.3f %% | %d split in %d "
-      "rounds: %d, %.2f deg, %.2f %%, %.3f %%\n",
-      b.before->mesh.vertexCount(), a.smallestDegrees, 100 * a.shareBelow30, 100 * d0, b.after->splitVertices,
-      b.after->splitRounds, b.after->mesh.vertexCount(), c.smallestDegrees, 100 * c.shareBelow30, 100 * d1);
+      "%s at %d%%: no splits %d vertices, %.2f deg, %.2f %% under 30, Hausdorff %.4f %% | %d split in %d "
+      "round(s): %d, %.2f deg, %.2f %%, %.4f %%\n",
+      name.c_str(), percent, b.before->mesh.vertexCount(), a.smallestDegrees, 100 * a.shareBelow30, 100 * d0,
+      b.after->splitVertices, b.after->splitRounds, b.after->mesh.vertexCount(), c.smallestDegrees,
+      100 * c.shareBelow30, 100 * d1);
   EXPECT_EQ(b.before->splitVertices, 0);
   EXPECT_GT(b.after->splitVertices, 0);
   EXPECT_EQ(b.after->mesh.vertexCount(), b.before->mesh.vertexCount() + b.after->splitVertices);
-  const int asked = b.input.vertexCount() * 5 / 100;
+  const int asked = b.input.vertexCount() * percent / 100;
   EXPECT_LE(b.after->splitVertices, static_cast<int>(SurfaceRemeshParams::kSplitShare * asked));
-  EXPECT_GT(c.smallestDegrees, a.smallestDegrees + 15.0);
+  EXPECT_GT(c.smallestDegrees, a.smallestDegrees + gain);
   EXPECT_LT(c.shareBelow30, a.shareBelow30);
   EXPECT_LE(d1, d0);
   expectValidWithoutCrossings(b);
 }
 
-// The splits of boundary edges (SplitEdges::Boundary, after the inner edges'): on
-// cylinder_locally_refined at 30%, faces of 24-29 degrees lie on the input's rim, their wide
+// The splits of faces under 30 degrees held by a wide angle (SurfaceRemeshParams::splitRounds) on
+// mech-holes-shark at 5%: vertices on the rims of its holes hold wide angles the polish cannot
+// mend (5.2 degrees); with the splits the smallest angle is more than 15 degrees higher.
+TEST(RemeshAngles, WideAnglesHeldOnHoleRimsAreSplit) { expectSplitsMendTheAngles("mech-holes-shark.off", 5, 15.0); }
+
+// The splits of boundary edges (SplitEdges::Boundary, after the inner edges') on
+// cylinder_locally_refined at 30%: faces of 24-29 degrees lie on the input's rim, their wide
 // angles (114-128 degrees) facing rim edges that are input edges (consecutive input vertices),
-// which the polish left so. Without splits and with them: the smallest angle more than 5 degrees higher, fewer faces
-// under 30, the vertices added (at most kSplitShare of the count asked) and no more, the
-// two-sided distance to the input (the oracle's) no larger, the topology kept, no faces crossing.
+// which the polish left so; with the splits the smallest angle is more than 5 degrees higher.
 TEST(RemeshAngles, WideAnglesFacingTheBoundaryAreSplit) {
-  const BeforeAndAfter b =
-      remeshBeforeAndAfter("cylinder_locally_refined.off", 30, [](SurfaceRemeshParams& p) { p.splitRounds = 0; });
-  ASSERT_TRUE(b.before) << b.before.status().message;
-  ASSERT_TRUE(b.after) << b.after.status().message;
-  const auto [a, c, d0, d1] = figuresOf(b);
-  std::printf(
-      "cylinder_locally_refined at 30%%: no splits %d vertices, %.2f deg, %.2f %% under 30, Hausdorff %.4f %% | %d "
-      "split in %d rounds: %d, %.2f deg, %.2f %%, %.4f %%\n",
-      b.before->mesh.vertexCount(), a.smallestDegrees, 100 * a.shareBelow30, 100 * d0, b.after->splitVertices,
-      b.after->splitRounds, b.after->mesh.vertexCount(), c.smallestDegrees, 100 * c.shareBelow30, 100 * d1);
-  EXPECT_GT(b.after->splitVertices, 0);
-  EXPECT_EQ(b.after->mesh.vertexCount(), b.before->mesh.vertexCount() + b.after->splitVertices);
-  const int asked = b.input.vertexCount() * 30 / 100;
-  EXPECT_LE(b.after->splitVertices, static_cast<int>(SurfaceRemeshParams::kSplitShare * asked));
-  EXPECT_GT(c.smallestDegrees, a.smallestDegrees + 5.0);
-  EXPECT_LT(c.shareBelow30, a.shareBelow30);
-  EXPECT_LE(d1, d0);
-  expectValidWithoutCrossings(b);
+  expectSplitsMendTheAngles("cylinder_locally_refined.off", 30, 5.0);
 }
 
 // The polish's measured valence batches (SurfaceRemeshParams::measuredPolishVertices, the

@@ -325,22 +325,42 @@ struct CurvePoint {
 /// nowhere (a corner of the curves: three or more blocked edges, the end of one, or a sharp turn).
 enum class Freedom { Surface, Curve, None };
 
+/// Where a point of `mesh` lies: at a vertex (vertex >= 0), on the edge facing corner `edgeCorner`
+/// of its face (then `onEdge`: the point on that edge, from its first end), or inside a face (both
+/// -1).
+struct PointPlace {
+  int vertex = -1;
+  int edgeCorner = -1;
+  CurvePoint onEdge;
+};
+PointPlace placeOf(const SurfacePoint& p, const TriMesh& mesh) {
+  PointPlace place;
+  if (p.vertex >= 0) {
+    place.vertex = p.vertex;
+    return place;
+  }
+  const Tri& t = mesh.triangles[p.face];
+  const int zeros = (p.bary[0] == 0) + (p.bary[1] == 0) + (p.bary[2] == 0);
+  if (zeros == 2) {  // at a corner of the face
+    place.vertex = t[p.bary[0] != 0 ? 0 : p.bary[1] != 0 ? 1 : 2];
+  } else if (zeros == 1) {  // on the edge facing the zero coordinate
+    const int k = p.bary[0] == 0 ? 0 : p.bary[1] == 0 ? 1 : 2;
+    place.edgeCorner = 3 * p.face + k;
+    place.onEdge = {t[(k + 1) % 3], t[(k + 2) % 3], p.bary[(k + 2) % 3]};
+  }
+  return place;
+}
+
 /// The freedom of a point of the input and, for Curve, where it is on its curve.
 Freedom freedomOf(const SurfacePoint& p, const SurfaceWalker& walker, CurvePoint& at) {
-  int v = p.vertex;
-  if (v < 0) {
-    const Tri& t = walker.mesh().triangles[p.face];
-    const int zeros = (p.bary[0] == 0) + (p.bary[1] == 0) + (p.bary[2] == 0);
-    if (zeros == 0) return Freedom::Surface;
-    if (zeros == 2) {  // at a corner of the face
-      v = t[p.bary[0] != 0 ? 0 : p.bary[1] != 0 ? 1 : 2];
-    } else {  // on the edge facing the zero coordinate
-      const int k = p.bary[0] == 0 ? 0 : p.bary[1] == 0 ? 1 : 2;
-      if (!walker.blocked(3 * p.face + k)) return Freedom::Surface;
-      at = {t[(k + 1) % 3], t[(k + 2) % 3], p.bary[(k + 2) % 3]};
-      return Freedom::Curve;
-    }
+  const PointPlace place = placeOf(p, walker.mesh());
+  if (place.edgeCorner >= 0) {
+    if (!walker.blocked(place.edgeCorner)) return Freedom::Surface;
+    at = place.onEdge;
+    return Freedom::Curve;
   }
+  const int v = place.vertex;
+  if (v < 0) return Freedom::Surface;
   std::array<int, 3> next{};
   const int n = walker.blockedNeighbours(v, next);
   if (n == 0) return Freedom::Surface;
@@ -1236,32 +1256,18 @@ double minCreaseLength(const TriMesh& output, const RelaxationParams& params) {
   return params.density ? 0.0 : params.minCreaseLength * output.meanEdgeLength();
 }
 
-/// Whether u and w are joined by a boundary edge of `mesh`.
-bool onBoundaryEdge(const TriMesh& mesh, int u, int w) {
-  for (const int* c = mesh.cornersBegin(u); c != mesh.cornersEnd(u); ++c) {
-    if (mesh.vertex(TriMesh::next(*c)) == w && mesh.oppositeCorner[TriMesh::prev(*c)] < 0) return true;
-    if (mesh.vertex(TriMesh::prev(*c)) == w && mesh.oppositeCorner[TriMesh::next(*c)] < 0) return true;
-  }
-  return false;
-}
-
 /// The ways along the input's boundary from p: one per boundary edge at p's vertex, or both ways
 /// along the boundary edge p lies on; none for a point inside a face or on an inner edge.
 std::vector<CurvePoint> boundaryWaysFrom(const SurfacePoint& p, const TriMesh& input) {
-  std::vector<CurvePoint> ways;
-  int v = p.vertex;
-  if (v < 0) {
-    const Tri& t = input.triangles[p.face];
-    const int zeros = (p.bary[0] == 0) + (p.bary[1] == 0) + (p.bary[2] == 0);
-    if (zeros == 0) return ways;
-    if (zeros == 1) {  // on the edge facing the zero coordinate
-      const int k = p.bary[0] == 0 ? 0 : p.bary[1] == 0 ? 1 : 2;
-      const int a = t[(k + 1) % 3], b = t[(k + 2) % 3];
-      if (input.oppositeCorner[3 * p.face + k] < 0) ways = {{a, b, p.bary[(k + 2) % 3]}, {b, a, p.bary[(k + 1) % 3]}};
-      return ways;
-    }
-    v = t[p.bary[0] != 0 ? 0 : p.bary[1] != 0 ? 1 : 2];  // at a corner of the face
+  const PointPlace place = placeOf(p, input);
+  if (place.edgeCorner >= 0) {
+    if (input.oppositeCorner[place.edgeCorner] >= 0) return {};
+    const CurvePoint& e = place.onEdge;
+    return {e, {e.b, e.a, 1 - e.t}};
   }
+  std::vector<CurvePoint> ways;
+  const int v = place.vertex;
+  if (v < 0) return ways;
   for (const int* c = input.cornersBegin(v); c != input.cornersEnd(v); ++c) {
     if (input.oppositeCorner[TriMesh::prev(*c)] < 0) ways.push_back({v, input.vertex(TriMesh::next(*c)), 0.0});
     if (input.oppositeCorner[TriMesh::next(*c)] < 0) ways.push_back({v, input.vertex(TriMesh::prev(*c)), 0.0});
@@ -1269,16 +1275,16 @@ std::vector<CurvePoint> boundaryWaysFrom(const SurfacePoint& p, const TriMesh& i
   return ways;
 }
 
-/// The point of the input's boundary at arc length s from p along one of its ways (slide, which
-/// stops at corners of the feature curves) nearest `aim`, if on a boundary edge and within
-/// `tolerance` of aim.
+/// The point of the input's boundary at arc length s from p along one of its ways nearest `aim`,
+/// if within `tolerance` of it. A slide (which stops at corners of the feature curves) that starts
+/// on the boundary stays on it: a boundary vertex has two boundary edges, and one more blocked
+/// edge makes it a corner.
 std::optional<SurfacePoint> alongBoundary(const SurfacePoint& p, double s, const Vec3& aim, double tolerance,
                                           const SurfaceWalker& walker) {
   std::optional<SurfacePoint> best;
   double nearest = tolerance;
   for (const CurvePoint& way : boundaryWaysFrom(p, walker.mesh())) {
     const CurvePoint to = slide(way, s, walker);
-    if (!onBoundaryEdge(walker.mesh(), to.a, to.b)) continue;
     const SurfacePoint q = walker.onInputEdge(to.a, to.b, to.t);
     const double d = (walker.pointOf(q.face, q.bary) - aim).norm();
     if (d <= nearest) {

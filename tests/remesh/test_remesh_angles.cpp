@@ -89,9 +89,9 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgal,
 // degrees, flipToBetterAngles; the worst face's edges flipped with climbs after, flipAndClimb)
 // brought from worse to as good: patch-20, bear_bis, blobby_3cc, ellipe0.003 at 5%;
 // elephant-with-holes, double-torus-3-holes, fandisk, knot2 at 30%; and the flips with climbs of
-// the faces under 30 degrees (flipAndClimbUnder30): pig at 10%, above; the valence flips with climbs (valenceFlipsAndClimbs): blobby_3cc at 30%; and the
-// other starts of a small output (SurfaceRemeshParams::restarts): patch-30 at 5%, blob-closed and
-// corner_tris_with_hole at 30%; and their looser relaxation (restartDeviation): sphere.off,
+// the faces under 30 degrees (flipAndClimbUnder30): pig at 10%, above; the valence flips with
+// climbs (valenceFlipsAndClimbs): blobby_3cc at 30%; and the other starts of a small output
+// (SurfaceRemeshParams::restarts): patch-30 at 5%, blob-closed and corner_tris_with_hole at 30%; and their looser relaxation (restartDeviation): sphere.off,
 // sphere.ply, itemb and ALSTOM_TEST4 at 5%; and the polish's measured valence batches
 // (SurfaceRemeshParams::measuredPolishVertices): knot1 and larger_sphere at 30%; and more starts
 // for the smallest outputs (SurfaceRemeshParams::restartsFor): corner_with_hole at 30%; and the

@@ -119,6 +119,10 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
         (relaxed.polishMoves > 0
              ? "; then " + count(relaxed.polishMoves) + " moves of the polish, raising the smallest angles"
              : std::string()) +
+        (r.lastPolishes > 0 ? "; polished again from where it stood, kept " +
+                                  (r.lastPolishes == 1 ? std::string("once") : count(r.lastPolishes) + " times") +
+                                  " (better angles, no farther from the input)"
+                            : std::string()) +
         (relaxed.slidingVertices > 0
              ? "; " + count(relaxed.slidingVertices) + " vertices moved only along the input's boundaries and creases"
              : std::string()) +

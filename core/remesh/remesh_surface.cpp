@@ -725,6 +725,17 @@ void removeEars(const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
     r.fewestCount = std::min(r.fewestCount, r.mesh.vertexCount());
 }
 
+/// `a` better than `b`: fewer faces under 30 degrees, or as many and a larger smallest angle.
+bool betterAngles(const AngleStatistics& a, const AngleStatistics& b) {
+  return a.shareMinBelow30 < b.shareMinBelow30 ||
+         (a.shareMinBelow30 == b.shareMinBelow30 && a.minDegrees > b.minDegrees);
+}
+
+/// `a` worse than `b` in either figure.
+bool worseAngles(const AngleStatistics& a, const AngleStatistics& b) {
+  return a.shareMinBelow30 > b.shareMinBelow30 || a.minDegrees < b.minDegrees;
+}
+
 /// `mesh` (with its points on the input, `origin`) polished (polishOnSurface) on the oriented
 /// input. A polish that makes more of its faces cross than `crossingPairs` is done again with the
 /// corners of the crossing faces and their neighbours pinned, up to kPolishPinRounds times, else
@@ -794,13 +805,11 @@ void runSplitRounds(const Prepared& prepared, const SurfaceRemeshParams& params,
     const std::optional<RelaxationResult> polished =
         polishWithoutCrossing(prepared, relaxation, guard, std::max(splitPairs, r.crossingPairs), mesh, points);
     const AngleStatistics a = angleStatistics(mesh);
-    const bool better = a.shareMinBelow30 < before.shareMinBelow30 ||
-                        (a.shareMinBelow30 == before.shareMinBelow30 && a.minDegrees > before.minDegrees);
     // The polish keeps the pairs at most max(splitPairs, r.crossingPairs): counted again only
     // when the split made more.
     const bool moreCross =
         splitPairs > r.crossingPairs && static_cast<int>(selfIntersectingFaces(mesh).size()) > r.crossingPairs;
-    if (!better || a.minDegrees < before.minDegrees || moreCross) {
+    if (!betterAngles(a, before) || worseAngles(a, before) || moreCross) {
       refuse();
       continue;
     }
@@ -852,6 +861,42 @@ void polishOutput(const Prepared& prepared, const SurfaceRemeshParams& params, S
   if (done) {
     r.relaxation.polishMoves = done->polishMoves;
     r.relaxation.flips += done->flips;
+  }
+  r.times.relaxation += lap(clock);
+}
+
+/// The two-sided distance between the output and the input at remeshDistances' samples.
+double outputDistance(const TriMesh& input, const SurfaceRemeshResult& r) {
+  const RemeshDistances d = remeshDistances(input, r.mesh, r.cell, r.origin, cellsAreVoronoi(r));
+  return std::max(d.toInput.max, d.fromInput.max);
+}
+
+/// The last polishes (SurfaceRemeshParams::lastPolishVertices): r polished again from where it
+/// stands with the relaxation's deviation limit, then with restartDeviation's, each kept only if
+/// its angles are better and neither worse, with no more crossing pairs and no farther from the
+/// input (outputDistance).
+void polishAgain(const TriMesh& input, const Prepared& prepared, const SurfaceRemeshParams& params,
+                 SurfaceRemeshResult& r) {
+  if (r.mesh.vertexCount() > params.lastPolishVertices || r.inputKept) return;
+  auto clock = std::chrono::steady_clock::now();
+  double distance = -1.0;  // r's, measured when first needed
+  for (const double deviation : {params.relaxation.maxDeviation, params.restartDeviation}) {
+    if (!(deviation > 0)) continue;
+    SurfaceRemeshResult polished = r;
+    SurfaceRemeshParams looser = params;
+    looser.relaxation.maxDeviation = deviation;
+    polished.relaxation.polishMoves = 0;  // this polish's, then added to r's
+    polishOutput(prepared, looser, polished);
+    polished.relaxation.polishMoves += r.relaxation.polishMoves;
+    const AngleStatistics before = angleStatistics(r.mesh), after = angleStatistics(polished.mesh);
+    if (!betterAngles(after, before) || worseAngles(after, before) || polished.crossingPairs > r.crossingPairs)
+      continue;
+    if (distance < 0) distance = outputDistance(input, r);
+    const double d = outputDistance(input, polished);
+    if (d > distance) continue;
+    distance = d;
+    r = std::move(polished);
+    ++r.lastPolishes;
   }
   r.times.relaxation += lap(clock);
 }
@@ -951,12 +996,7 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
   if (!freeCreases) return freeCreases.status();
   const AngleStatistics first = angleStatistics(r.mesh);
   AngleStatistics best = first;
-  // Two-sided, at remeshDistances' samples (remesh_distance.h).
-  const auto distance = [&](const SurfaceRemeshResult& x) {
-    const RemeshDistances d = remeshDistances(input, x.mesh, x.cell, x.origin, cellsAreVoronoi(x));
-    return std::max(d.toInput.max, d.fromInput.max);
-  };
-  const double firstDistance = distance(r);
+  const double firstDistance = outputDistance(input, r);
   double keptDistance = firstDistance;
   std::optional<SurfaceRemeshResult> kept;
   SurfaceRemeshParams held = p;  // the other seeds hold every crease as the first does
@@ -973,13 +1013,11 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
                                               : remeshWhole(input, metric, prepared, start, 1.0, Progress{});
     if (!other) continue;
     const AngleStatistics a = angleStatistics(other->mesh);
-    const bool better = a.shareMinBelow30 < best.shareMinBelow30 ||
-                        (a.shareMinBelow30 == best.shareMinBelow30 && a.minDegrees > best.minDegrees);
     const bool looser = start.relaxation.maxDeviation > p.relaxation.maxDeviation;
-    if (!better || other->mesh.vertexCount() != r.mesh.vertexCount() || other->crossingPairs > r.crossingPairs ||
-        a.minDegrees < first.minDegrees || a.shareMinBelow30 > first.shareMinBelow30)
+    if (!betterAngles(a, best) || other->mesh.vertexCount() != r.mesh.vertexCount() ||
+        other->crossingPairs > r.crossingPairs || worseAngles(a, first))
       continue;
-    const double d = distance(*other);
+    const double d = outputDistance(input, *other);
     if (d > (looser ? keptDistance : firstDistance)) continue;
     best = a;
     keptDistance = d;
@@ -1015,6 +1053,7 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   if (!r) return r.status();
   if (Status s = restartSmallOutput(input, metric, prepared, p, progress.sub(0.0, remeshShare), *r); !s) return s;
   splitAndPolish(prepared, p, *r);
+  polishAgain(input, prepared, p, *r);
   r->times.prepare += prepared.prepareSeconds;  // once for the call, whatever start was kept
   r->times.engine += prepared.engineSeconds;
   auto clock = std::chrono::steady_clock::now();

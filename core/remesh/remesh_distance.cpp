@@ -203,20 +203,40 @@ void outputFaces(const TriMesh& input, const TriMesh& output, const Shared& s, i
   }
 }
 
-/// The input's vertices, each against the output triangles around its cell's output vertex, then
-/// walked from the nearest of them.
-Bounds inputVertices(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell, const Shared& s) {
+/// `p`'s distance to the output triangles around output vertex c, then walked from the nearest of
+/// them; infinite where c is no output vertex.
+double fromCell(const Vec3& p, const TriMesh& output, int c, const Shared& s) {
+  double d = kInf;
+  int nearest = -1;
+  if (c >= 0 && c < output.vertexCount())
+    for (const int* k = output.cornersBegin(c); k != output.cornersEnd(c); ++k)
+      if (s.outputFaces.mayBeNearer(p, *k / 3, d))
+        if (const double e = distanceToFace(p, output, *k / 3); e < d) d = e, nearest = *k / 3;
+  if (nearest >= 0) d = std::min(d, walkToNearest(p, output, s.outputFaces, nearest).first);
+  return d;
+}
+
+/// The input's vertices, each from its cell's output vertex (fromCell); with
+/// VerticesMidpointsCentroids also each face's centroid, from its three corners' cells, and the
+/// midpoint of each side, once per edge (standing for both faces' samples), from its two ends'.
+Bounds inputBounds(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell, const Shared& s,
+                   DistanceSamples samples) {
   Bounds b;
-  for (int v = 0; v < input.vertexCount(); ++v) {
-    const Vec3& p = input.positions[v];
-    double d = kInf;
-    int nearest = -1;
-    if (const int c = cell[v]; c >= 0 && c < output.vertexCount())
-      for (const int* k = output.cornersBegin(c); k != output.cornersEnd(c); ++k)
-        if (s.outputFaces.mayBeNearer(p, *k / 3, d))
-          if (const double e = distanceToFace(p, output, *k / 3); e < d) d = e, nearest = *k / 3;
-    if (nearest >= 0) d = std::min(d, walkToNearest(p, output, s.outputFaces, nearest).first);
-    b.add(p, d);
+  for (int v = 0; v < input.vertexCount(); ++v)
+    b.add(input.positions[v], fromCell(input.positions[v], output, cell[v], s));
+  if (samples != DistanceSamples::VerticesMidpointsCentroids) return b;
+  for (int f = 0; f < input.faceCount(); ++f) {
+    const Tri& t = input.triangles[f];
+    const Vec3 centroid = (input.positions[t[0]] + input.positions[t[1]] + input.positions[t[2]]) / 3.0;
+    b.add(centroid, std::min({fromCell(centroid, output, cell[t[0]], s), fromCell(centroid, output, cell[t[1]], s),
+                              fromCell(centroid, output, cell[t[2]], s)}));
+    for (int k = 0; k < 3; ++k) {  // the side from corner k to k + 1, across from corner k + 2
+      const int across = input.oppositeCorner[3 * f + (k + 2) % 3];
+      if (across >= 0 && across / 3 < f) continue;  // measured with the other face
+      const Vec3 x = 0.5 * (input.positions[t[k]] + input.positions[t[(k + 1) % 3]]);
+      b.add(x, std::min(fromCell(x, output, cell[t[k]], s), fromCell(x, output, cell[t[(k + 1) % 3]], s)),
+            across >= 0 ? 2.0 : 1.0);
+    }
   }
   return b;
 }
@@ -255,7 +275,8 @@ std::optional<SurfaceDistance> certify(const Bounds& b, const TriMesh& to, const
 }  // namespace
 
 RemeshDistances remeshDistances(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell,
-                                const std::vector<SurfacePoint>& origin, bool voronoiCells) {
+                                const std::vector<SurfacePoint>& origin, bool voronoiCells,
+                                DistanceSamples inputSamples) {
   RemeshDistances r;
   if (input.faceCount() == 0 || output.faceCount() == 0) return r;
   Shared shared;
@@ -276,7 +297,7 @@ RemeshDistances remeshDistances(const TriMesh& input, const TriMesh& output, con
   onTwoThreads([&](bool helper) {
     Bounds& mine = to[helper];
     if (helper && voronoiCells)
-      from = inputVertices(input, output, cell, shared);
+      from = inputBounds(input, output, cell, shared, inputSamples);
     else if (!helper)
       outputVertices(input, output, shared, mine);
     for (int block = nextBlock++; block * kBlock < output.faceCount(); block = nextBlock++)
@@ -293,7 +314,7 @@ RemeshDistances remeshDistances(const TriMesh& input, const TriMesh& output, con
   });
   r.gridDirections = !toInput + !fromInput;  // !voronoiCells: the input's side by the grid
   r.toInput = toInput ? *toInput : surfaceDistance(output, input);
-  r.fromInput = fromInput ? *fromInput : surfaceDistance(input, output, {}, 0, DistanceSamples::Vertices);
+  r.fromInput = fromInput ? *fromInput : surfaceDistance(input, output, {}, 0, inputSamples);
   r.exactQueries = toQueries + fromQueries;
   return r;
 }

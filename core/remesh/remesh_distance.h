@@ -51,7 +51,13 @@ constexpr int kMaxExactQueries = 64;
 /// `voronoiCells` false: the cells are no longer Voronoi cells of the output's vertices (edge
 /// collapses merged them, edge_collapse.h) and the input's side is measured by surfaceDistance's
 /// grid (a merged cell of a coarse output over a thin plate left its RMS 7% above the grid's).
+/// `inputSamples`: the input's vertices alone (above), or VerticesMidpointsCentroids, the samples
+/// of the project's measure both ways (each face's centroid from its corners' cells, each side's
+/// midpoint from its ends'): where the input is coarse for the output, its largest distance may
+/// lie there (triceratops at 30%, 849 of 2,832 vertices: 1.282% of the diagonal at a face's
+/// samples, 1.162% at its vertices).
 RemeshDistances remeshDistances(const TriMesh& input, const TriMesh& output, const std::vector<int>& cell,
-                                const std::vector<SurfacePoint>& origin, bool voronoiCells = true);
+                                const std::vector<SurfacePoint>& origin, bool voronoiCells = true,
+                                DistanceSamples inputSamples = DistanceSamples::Vertices);
 
 }  // namespace gr

@@ -865,21 +865,26 @@ void polishOutput(const Prepared& prepared, const SurfaceRemeshParams& params, S
   r.times.relaxation += lap(clock);
 }
 
-/// The two-sided distance between the output and the input at remeshDistances' samples.
-double outputDistance(const TriMesh& input, const SurfaceRemeshResult& r) {
-  const RemeshDistances d = remeshDistances(input, r.mesh, r.cell, r.origin, cellsAreVoronoi(r));
+/// The two-sided distance between the output and the input at remeshDistances' samples (on the
+/// input's side, `inputSamples`).
+double outputDistance(const TriMesh& input, const SurfaceRemeshResult& r,
+                      DistanceSamples inputSamples = DistanceSamples::Vertices) {
+  const RemeshDistances d = remeshDistances(input, r.mesh, r.cell, r.origin, cellsAreVoronoi(r), inputSamples);
   return std::max(d.toInput.max, d.fromInput.max);
 }
 
 /// The last polishes (SurfaceRemeshParams::lastPolishVertices): r polished again from where it
 /// stands with the relaxation's deviation limit, then with restartDeviation's, each kept only if
 /// its angles are better and neither worse, with no more crossing pairs and no farther from the
-/// input (outputDistance).
+/// input (outputDistance, the input's centroids and midpoints measured too).
 void polishAgain(const TriMesh& input, const Prepared& prepared, const SurfaceRemeshParams& params,
                  SurfaceRemeshResult& r) {
-  if (r.mesh.vertexCount() > params.lastPolishVertices || r.inputKept) return;
+  if (r.mesh.vertexCount() > params.lastPolishVertices || r.inputKept ||
+      !(angleStatistics(r.mesh).minDegrees < SurfaceRemeshParams::kLastPolishBelowDegrees))
+    return;
   auto clock = std::chrono::steady_clock::now();
-  double distance = -1.0;  // r's, measured when first needed
+  const double relaxation = r.times.relaxation;  // the polishes' own laps are counted in this one's
+  double distance = -1.0;                        // r's, measured when first needed
   for (const double deviation : {params.relaxation.maxDeviation, params.restartDeviation}) {
     if (!(deviation > 0)) continue;
     SurfaceRemeshResult polished = r;
@@ -891,14 +896,15 @@ void polishAgain(const TriMesh& input, const Prepared& prepared, const SurfaceRe
     const AngleStatistics before = angleStatistics(r.mesh), after = angleStatistics(polished.mesh);
     if (!betterAngles(after, before) || worseAngles(after, before) || polished.crossingPairs > r.crossingPairs)
       continue;
-    if (distance < 0) distance = outputDistance(input, r);
-    const double d = outputDistance(input, polished);
+    constexpr DistanceSamples kInputSamples = DistanceSamples::VerticesMidpointsCentroids;
+    if (distance < 0) distance = outputDistance(input, r, kInputSamples);
+    const double d = outputDistance(input, polished, kInputSamples);
     if (d > distance) continue;
     distance = d;
     r = std::move(polished);
     ++r.lastPolishes;
   }
-  r.times.relaxation += lap(clock);
+  r.times.relaxation = relaxation + lap(clock);
 }
 
 /// An output with more vertices than the input is no remesh (many components and boundary loops

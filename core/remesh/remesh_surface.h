@@ -184,21 +184,29 @@ struct SurfaceRemeshParams {
   /// get none. 0 = off.
   int splitRounds = 4;
   static constexpr double kSplitShare = 0.05;
-  /// The last polishes, after the splits: an output of at most this many vertices is polished
-  /// again from where it stands (polishOnSurface: its aim, the smallest angle + the margin, and the
-  /// points each vertex must stay near, taken anew), first with the relaxation's deviation limit,
-  /// then with restartDeviation's; each kept only if the share of faces under 30 degrees falls, or
-  /// stays and the smallest angle rises, neither getting worse, with no more crossing pairs and a
-  /// two-sided distance to the input at remeshDistances' samples no larger. One polish stops at its
-  /// aim (mannequin-devil at 5%: 32.1 degrees, CGAL's isotropic remeshing 32.5 at our count).
-  /// Over the data set against CGAL at our count: as good on one more mesh at 5% (mannequin-devil
-  /// 35.1 degrees) and at 30% (anchor_dense 34.1 -> 37.9, CGAL 36.6), the same at 10%; no output
-  /// worse (they only ever improve). Cost: up to two polishes and three distances (bear at 30%,
-  /// 4,147 vertices: each polish about 58 ms, each distance 15-25 ms, where the whole call takes
-  /// 110 ms), and on larger outputs the distance often refuses them (bunny00 at 10%: 37.1 -> 40.2
-  /// degrees, the distance 6% larger, refused; the call 221 -> 320 ms): hence the bound, that of
+  /// The last polishes, after the splits: an output of at most this many vertices, with a
+  /// smallest angle under kLastPolishBelowDegrees, is polished again from where it stands
+  /// (polishOnSurface: its aim, the smallest angle + the margin, and the points each vertex must
+  /// stay near, taken anew; one polish stops at its aim: mannequin-devil at 5%, 32.1 degrees, CGAL's
+  /// isotropic remeshing 32.5 at our count), first with the relaxation's deviation limit, then with
+  /// restartDeviation's; each kept only if the share of faces under 30 degrees falls, or stays and
+  /// the smallest angle rises, neither getting worse, with no more crossing pairs and a two-sided
+  /// distance to the input no larger (remeshDistances with the input's face centroids and side
+  /// midpoints: with its vertices alone, triceratops at 30% kept a polish that took it from 1.282
+  /// to 1.346% of the diagonal by the oracle, at an input face's sample). Over the data set against
+  /// CGAL at our count: as good on one more mesh at 5% (mannequin-devil 35.1 degrees) and at 30%
+  /// (anchor_dense 34.1 -> 37.9, CGAL 36.6), the same at 10%; no output worse in angles, none
+  /// farther from the input by the oracle's two-sided Hausdorff distance, RMS up to a few percent
+  /// higher (docs/BENCHMARKS.md). Cost: up to two polishes and three distances, best of 3: knot at
+  /// 5% (104 vertices) 46 -> 165 ms, homer at 30% (1,483) 68 -> 275 ms, anchor_dense at 30%
+  /// (1,141) 157 -> 263 ms. On larger outputs the distance mostly refuses them (bunny00 at 10%:
+  /// 37.1 -> 40.2 degrees but 6% farther; the call 221 -> 320 ms): hence the bound, that of
   /// measuredPolishVertices. 0 = never.
   int lastPolishVertices = 2000;
+  /// The last polishes run only on an output whose smallest angle is under this (degrees): above
+  /// it they cost most and bring least (fandisk at 10%, 647 vertices at 40.3 degrees: 45 -> 212
+  /// ms for 42.2 degrees; bear at 5%, 43.7 degrees: 52 -> 378 ms).
+  static constexpr double kLastPolishBelowDegrees = 36.0;
   /// Also measure the output: angle statistics and (measureDistance) the surface distance to the
   /// input both ways (the figures of the filters' log).
   bool measure = true;

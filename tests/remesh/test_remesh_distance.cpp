@@ -2,10 +2,10 @@
 // against surfaceDistance (vcglib's grid over the whole surface, the same samples): the one-sided
 // Hausdorff distances equal both ways to CGAL's exact ones at those samples (the grid's within
 // 2e-4 of them: near cheese's slivers it misses the nearest point by 1.3e-4), the RMS at least the grid's
-// and at most 5% above it. On a
+// and at most 5% above it; the same with the input's centroids and midpoints measured too. On a
 // scan (bunny00), a CAD mesh
-// (fandisk), a refined sliver mesh (cheese.off) and a refined CAD-like mesh whose input faces span
-// many cells (the gear plate).
+// (fandisk), a refined sliver mesh (cheese.off), a refined CAD-like mesh whose input faces span
+// many cells (the gear plate) and a coarse input (triceratops at 30%).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -51,6 +51,21 @@ void expectAsTheGrid(const std::string& name, const TriMesh& input, double fract
   EXPECT_LE(d.toInput.rms, 1.05 * to.rms);
   EXPECT_GE(d.fromInput.rms, from.rms * (1 - 1e-9));
   EXPECT_LE(d.fromInput.rms, 1.05 * from.rms);
+
+  // The input's centroids and midpoints measured too (DistanceSamples::VerticesMidpointsCentroids):
+  // its side as the grid's whole measure, exact by CGAL where no direction fell back to the grid.
+  const RemeshDistances all = remeshDistances(input, r->mesh, r->cell, r->origin, r->collapsedVertices == 0,
+                                              DistanceSamples::VerticesMidpointsCentroids);
+  const SurfaceDistance fromAll = surfaceDistance(input, r->mesh);
+  const Expected<double> exactFromAll = oracle::largestDistanceAtSamples(input, r->mesh, true);
+  ASSERT_TRUE(exactFromAll);
+  std::printf("  with the input's centroids and midpoints: from it max %.9g (grid %.9g, CGAL %.9g) rms %.6g (%.6g)\n",
+              all.fromInput.max, fromAll.max, *exactFromAll, all.fromInput.rms, fromAll.rms);
+  EXPECT_EQ(all.toInput.max, d.toInput.max);
+  EXPECT_GE(all.fromInput.max, d.fromInput.max);
+  EXPECT_NEAR(all.fromInput.max, *exactFromAll, (all.gridDirections == 0 ? 1e-9 : 2e-4) * *exactFromAll);
+  EXPECT_GE(all.fromInput.rms, fromAll.rms * (1 - 1e-9));
+  EXPECT_LE(all.fromInput.rms, 1.05 * fromAll.rms);
 }
 
 TEST(RemeshDistance, HausdorffExactAtTheGridsSamplesAndRmsWithinFivePercent) {
@@ -59,6 +74,8 @@ TEST(RemeshDistance, HausdorffExactAtTheGridsSamplesAndRmsWithinFivePercent) {
   expectAsTheGrid("cheese", test::loadRealMesh("cheese.off"), 0.1);
   expectAsTheGrid("cad_gear", test::cadMeshes()[0].mesh, 0.1);
   expectAsTheGrid("cad_hole_plate", test::cadMeshes()[1].mesh, 0.1);
+  // A coarse input for its output: its largest distance lies at a face's sample, not a vertex.
+  expectAsTheGrid("triceratops", test::loadRealMesh("triceratops.off"), 0.3);
 }
 
 // The filters' log reads the same figures: remeshSurface with `measure` fills them from

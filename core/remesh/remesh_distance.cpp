@@ -216,6 +216,15 @@ double fromCell(const Vec3& p, const TriMesh& output, int c, const Shared& s) {
   return d;
 }
 
+/// The least of fromCell over the cells a, b and c, each distinct cell walked once (most input
+/// faces lie inside one cell); c = -1 for a side's two ends.
+double fromCells(const Vec3& p, const TriMesh& output, int a, int b, int c, const Shared& s) {
+  double d = fromCell(p, output, a, s);
+  if (b != a) d = std::min(d, fromCell(p, output, b, s));
+  if (c >= 0 && c != a && c != b) d = std::min(d, fromCell(p, output, c, s));
+  return d;
+}
+
 /// The input's vertices, each from its cell's output vertex (fromCell); with
 /// VerticesMidpointsCentroids also each face's centroid, from its three corners' cells, and the
 /// midpoint of each side, once per edge (standing for both faces' samples), from its two ends'.
@@ -228,14 +237,12 @@ Bounds inputBounds(const TriMesh& input, const TriMesh& output, const std::vecto
   for (int f = 0; f < input.faceCount(); ++f) {
     const Tri& t = input.triangles[f];
     const Vec3 centroid = (input.positions[t[0]] + input.positions[t[1]] + input.positions[t[2]]) / 3.0;
-    b.add(centroid, std::min({fromCell(centroid, output, cell[t[0]], s), fromCell(centroid, output, cell[t[1]], s),
-                              fromCell(centroid, output, cell[t[2]], s)}));
+    b.add(centroid, fromCells(centroid, output, cell[t[0]], cell[t[1]], cell[t[2]], s));
     for (int k = 0; k < 3; ++k) {  // the side from corner k to k + 1, across from corner k + 2
       const int across = input.oppositeCorner[3 * f + (k + 2) % 3];
       if (across >= 0 && across / 3 < f) continue;  // measured with the other face
       const Vec3 x = 0.5 * (input.positions[t[k]] + input.positions[t[(k + 1) % 3]]);
-      b.add(x, std::min(fromCell(x, output, cell[t[k]], s), fromCell(x, output, cell[t[(k + 1) % 3]], s)),
-            across >= 0 ? 2.0 : 1.0);
+      b.add(x, fromCells(x, output, cell[t[k]], cell[t[(k + 1) % 3]], -1, s), across >= 0 ? 2.0 : 1.0);
     }
   }
   return b;

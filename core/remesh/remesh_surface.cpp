@@ -879,9 +879,9 @@ double outputDistance(const TriMesh& input, const SurfaceRemeshResult& r,
 /// input (outputDistance, the input's centroids and midpoints measured too).
 void polishAgain(const TriMesh& input, const Prepared& prepared, const SurfaceRemeshParams& params,
                  SurfaceRemeshResult& r) {
-  if (r.mesh.vertexCount() > params.lastPolishVertices || r.inputKept ||
-      !(angleStatistics(r.mesh).minDegrees < SurfaceRemeshParams::kLastPolishBelowDegrees))
-    return;
+  if (r.mesh.vertexCount() > params.lastPolishVertices || r.inputKept) return;
+  AngleStatistics before = angleStatistics(r.mesh);  // r's, taken once
+  if (!(before.minDegrees < SurfaceRemeshParams::kLastPolishBelowDegrees)) return;
   auto clock = std::chrono::steady_clock::now();
   const double relaxation = r.times.relaxation;  // the polishes' own laps are counted in this one's
   double distance = -1.0;                        // r's, measured when first needed
@@ -893,7 +893,7 @@ void polishAgain(const TriMesh& input, const Prepared& prepared, const SurfaceRe
     polished.relaxation.polishMoves = 0;  // this polish's, then added to r's
     polishOutput(prepared, looser, polished);
     polished.relaxation.polishMoves += r.relaxation.polishMoves;
-    const AngleStatistics before = angleStatistics(r.mesh), after = angleStatistics(polished.mesh);
+    const AngleStatistics after = angleStatistics(polished.mesh);
     if (!betterAngles(after, before) || worseAngles(after, before) || polished.crossingPairs > r.crossingPairs)
       continue;
     constexpr DistanceSamples kInputSamples = DistanceSamples::VerticesMidpointsCentroids;
@@ -901,6 +901,7 @@ void polishAgain(const TriMesh& input, const Prepared& prepared, const SurfaceRe
     const double d = outputDistance(input, polished, kInputSamples);
     if (d > distance) continue;
     distance = d;
+    before = after;
     r = std::move(polished);
     ++r.lastPolishes;
   }

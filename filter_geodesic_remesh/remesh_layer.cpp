@@ -45,10 +45,16 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
       (r.collapsedVertices > 0
            ? ", " + count(r.collapsedVertices) + " removed by edge collapses to reach the count asked for"
            : std::string()) +
-      (r.removedEars > 0 ? ", " + count(r.removedEars) +
-                               " removed with flat ears off the boundary (a triangle with two boundary edges and an "
-                               "angle under 30 deg, its tip near its base, which the boundary then follows)"
-                         : std::string()) +
+      (r.removedEars > r.sharpEars
+           ? ", " + count(r.removedEars - r.sharpEars) +
+                 " removed with flat ears off the boundary (a triangle with two boundary edges and an "
+                 "angle under 30 deg, its tip near its base, which the boundary then follows)"
+           : std::string()) +
+      (r.sharpEars > 0 ? ", " + count(r.sharpEars) +
+                             " removed with sharp ears off the boundary (a spike: a triangle with two boundary edges "
+                             "and its smallest angle, under 30 deg, between them, shorter than an edge; cut where "
+                             "the distance to the input does not grow)"
+                       : std::string()) +
       (r.splitVertices > 0 ? ", " + count(r.splitVertices) +
                                  " added by splitting the edge facing a wide angle of triangles under 30 deg (" +
                                  rounds(r.splitRounds) + ")"

@@ -279,6 +279,19 @@ CollapseResult collapseCrossingFaces(TriMesh& mesh, std::vector<SurfacePoint>& o
 
 namespace {
 
+/// The corner at the tip m of face f if f is an ear: two boundary edges, m (between them) in no
+/// other face, the third edge (facing m) interior; else -1.
+int earCorner(const TriMesh& mesh, int f) {
+  int interior = -1, boundaryEdges = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (mesh.oppositeCorner[3 * f + k] < 0)
+      ++boundaryEdges;
+    else
+      interior = 3 * f + k;
+  }
+  return boundaryEdges == 2 && mesh.valence(mesh.vertex(interior)) == 1 ? interior : -1;
+}
+
 /// The ears removeFlatEars takes in one round: per vertex, the vertex it goes onto (or -1), and
 /// per face, 0 for an ear; false if there is none. Ears that share a vertex wait for a later round.
 bool markFlatEars(const TriMesh& mesh, double maxHeight, std::vector<int>& onto, std::vector<char>& faceAlive) {
@@ -287,17 +300,11 @@ bool markFlatEars(const TriMesh& mesh, double maxHeight, std::vector<int>& onto,
   std::vector<char> touched(mesh.vertexCount(), 0);
   bool any = false;
   for (int f = 0; f < mesh.faceCount(); ++f) {
-    int interior = -1, boundaryEdges = 0;
-    for (int k = 0; k < 3; ++k) {
-      if (mesh.oppositeCorner[3 * f + k] < 0)
-        ++boundaryEdges;
-      else
-        interior = 3 * f + k;
-    }
-    if (boundaryEdges != 2) continue;
+    const int interior = earCorner(mesh, f);
+    if (interior < 0) continue;
     const int m = mesh.vertex(interior), a = mesh.vertex(TriMesh::next(interior)),
               b = mesh.vertex(TriMesh::prev(interior));
-    if (mesh.valence(m) != 1 || touched[m] || touched[a] || touched[b]) continue;
+    if (touched[m] || touched[a] || touched[b]) continue;
     const Vec3 &pm = mesh.positions[m], &pa = mesh.positions[a], &pb = mesh.positions[b];
     const double base = (pb - pa).norm();
     const double height = (pa - pm).cross(pb - pm).norm() / base;
@@ -327,6 +334,36 @@ CollapseResult removeFlatEars(TriMesh& mesh, std::vector<SurfacePoint>& origin, 
     ++r.passes;
   }
   return r;
+}
+
+std::vector<int> sharpEars(const TriMesh& mesh, double maxDepth) {
+  std::vector<std::pair<double, int>> ears;  // (angle at the tip, face)
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const int tip = earCorner(mesh, f);
+    if (tip < 0) continue;
+    const Vec3 &pm = mesh.positions[mesh.vertex(tip)], &pa = mesh.positions[mesh.vertex(TriMesh::next(tip))],
+               &pb = mesh.positions[mesh.vertex(TriMesh::prev(tip))];
+    const double atTip = angleAt(pm, pa, pb), base = (pb - pa).norm();
+    if (!(atTip < kEarAngle) || atTip > std::min(angleAt(pa, pb, pm), angleAt(pb, pm, pa)) || !(base > 0)) continue;
+    if ((pa - pm).cross(pb - pm).norm() / base <= maxDepth) ears.push_back({atTip, f});
+  }
+  std::sort(ears.begin(), ears.end());
+  std::vector<int> faces;
+  for (const auto& [angle, f] : ears) faces.push_back(f);
+  return faces;
+}
+
+bool removeEar(TriMesh& mesh, std::vector<SurfacePoint>& origin, std::vector<int>& cell, int face) {
+  const int tip = earCorner(mesh, face);
+  if (tip < 0 || mesh.vertexCount() <= 3) return false;
+  const int m = mesh.vertex(tip), a = mesh.vertex(TriMesh::next(tip)), b = mesh.vertex(TriMesh::prev(tip));
+  std::vector<int> onto(mesh.vertexCount(), -1);
+  std::vector<char> faceAlive(mesh.faceCount(), 1);
+  const Vec3& pm = mesh.positions[m];
+  onto[m] = (pm - mesh.positions[a]).squaredNorm() <= (pm - mesh.positions[b]).squaredNorm() ? a : b;
+  faceAlive[face] = 0;
+  std::vector<double> weight(mesh.vertexCount(), 1.0);
+  return compact(mesh, onto, faceAlive, origin, weight, cell);
 }
 
 }  // namespace gr

@@ -14,6 +14,7 @@
 #include <iterator>
 #include <limits>
 #include <new>
+#include <optional>
 #include <regex>
 #include <set>
 #include <stdexcept>
@@ -127,6 +128,24 @@ class FilterInProcess : public ::testing::Test {
     plugin.initParameterSet(action, mm, params);
   }
   bool apply() { return plugin.applyFilter(action, doc, params, nullptr); }
+  /// The uniform filter with its defaults on the data-set mesh `name` at `percent` of its
+  /// vertices, applied (its output the current layer); returns the core's remesh of the input
+  /// layer as the filter read it, to compare the log with. Empty if the filter failed.
+  std::optional<SurfaceRemeshResult> uniformAndItsCore(const std::string& name, int percent) {
+    use("Remeshing: Geodesic Uniform");
+    const TriMesh input = test::loadRealMesh(name);
+    MeshModel* mm = addMesh(doc, input.positions, input.triangles);
+    declare(*mm);
+    const int target = input.vertexCount() * percent / 100;
+    params.setValue(filters::param::kTargetVertices, IntValue(target));
+    if (!apply()) return std::nullopt;
+    SurfaceRemeshParams core;
+    core.sampling.targetCount = target;
+    core.measure = false;
+    Expected<SurfaceRemeshResult> r = remeshAsTheFilterReads(*mm, core);
+    if (!r) return std::nullopt;
+    return std::move(r).value();
+  }
   std::string logText() const {
     std::string all;
     for (const auto& entry : log.logStringList()) all += entry.second.toStdString() + "\n";
@@ -667,21 +686,23 @@ TEST_F(FilterInProcess, UniformRemeshOfASmallOutputLogsItsStarts) {
 // float coordinates the outputs differ from the core's on the file's doubles: mannequin-devil at
 // 5% and anchor_dense at 30%, polished again in tests/remesh, keep no last polish here.)
 TEST_F(FilterInProcess, UniformRemeshLogsItsLastPolishes) {
-  use("Remeshing: Geodesic Uniform");
-  const TriMesh input = test::loadRealMesh("holes.off");
-  MeshModel* mm = addMesh(doc, input.positions, input.triangles);
-  declare(*mm);
-  const int target = input.vertexCount() * 5 / 100;
-  params.setValue(filters::param::kTargetVertices, IntValue(target));
-  ASSERT_TRUE(apply()) << logText();
-  SurfaceRemeshParams core;
-  core.sampling.targetCount = target;
-  core.measure = false;
-  const Expected<SurfaceRemeshResult> r = remeshAsTheFilterReads(*mm, core);
-  ASSERT_TRUE(r) << r.status().message;
+  const std::optional<SurfaceRemeshResult> r = uniformAndItsCore("holes.off", 5);
+  ASSERT_TRUE(r) << logText();
   ASSERT_EQ(r->lastPolishes, 1);
   EXPECT_EQ(doc.mm()->cm.VN(), r->mesh.vertexCount());
   EXPECT_NE(logText().find("polished again from where it stood, kept once (better angles, no farther from the input)"),
+            std::string::npos)
+      << logText();
+}
+
+// The sharp ears cut last (SurfaceRemeshParams::cutSharpEars) are logged: lion at 10%, its
+// input's own spike on the boundary (as the core run on the filter's input says).
+TEST_F(FilterInProcess, UniformRemeshLogsItsSharpEarsCut) {
+  const std::optional<SurfaceRemeshResult> r = uniformAndItsCore("lion.off", 10);
+  ASSERT_TRUE(r) << logText();
+  ASSERT_GE(r->sharpEars, 1);
+  EXPECT_EQ(doc.mm()->cm.VN(), r->mesh.vertexCount());
+  EXPECT_NE(logText().find(std::to_string(r->sharpEars) + " removed with sharp ears off the boundary (a spike"),
             std::string::npos)
       << logText();
 }

@@ -182,5 +182,46 @@ TEST(FlatEars, FlatEarsGoFatOrTallOnesStay) {
   }
 }
 
+// sharpEars: ears whose smallest angle, under 30 degrees, is at the tip, within maxDepth of their
+// base, sharpest first; a flat ear (its small angles at the base) and a fat one are none.
+// removeEar takes one with its tip (the topology recounted, the cell onto the nearer end) and
+// refuses a face that is no ear, changing nothing.
+TEST(SharpEars, SpikesShorterThanTheDepthAreFoundSharpestFirstAndRemoved) {
+  // a (0), b (1), c (2) above the edge (a, b), m (3) below it: two ears, tips m and c.
+  const auto twoEars = [](const Vec3& m) {
+    return buildTriMesh({Vec3(0, 0, 0), Vec3(0.2, 0, 0), Vec3(0.1, 0.8, 0), m}, {{0, 3, 1}, {0, 1, 2}}).value();
+  };
+  const TriMesh spike = twoEars(Vec3(0.08, -1.0, 0));  // tip angles 11.4 (m) and 14.3 (c) degrees
+  EXPECT_EQ(sharpEars(spike, 1.5), (std::vector<int>{0, 1}));
+  EXPECT_EQ(sharpEars(spike, 0.9), (std::vector<int>{1}));                          // m is 1.0 from (a, b), c 0.8
+  EXPECT_EQ(sharpEars(twoEars(Vec3(0.1, -0.005, 0)), 1.5), (std::vector<int>{1}));  // m's ear is flat
+  EXPECT_EQ(sharpEars(twoEars(Vec3(0.1, -0.1, 0)), 1.5), (std::vector<int>{1}));    // m's is 90 degrees
+
+  TriMesh mesh = spike;
+  std::vector<SurfacePoint> origin;
+  for (int v = 0; v < 4; ++v) origin.push_back(SurfacePoint::atVertex(10 + v));
+  std::vector<int> cell = {3, 1, 2, 0, -1};
+  ASSERT_TRUE(removeEar(mesh, origin, cell, 0));
+  ASSERT_EQ(mesh.vertexCount(), 3);
+  ASSERT_EQ(mesh.faceCount(), 1);
+  const test::Recount after = test::recount(mesh.triangles, mesh.vertexCount());
+  EXPECT_EQ(after.components, 1);
+  EXPECT_EQ(after.boundaryLoops, 1);
+  EXPECT_TRUE(after.manifoldEdges && after.manifoldVertices && after.oriented);
+  EXPECT_EQ(origin[2].vertex, 12);
+  EXPECT_EQ(cell, (std::vector<int>{0, 1, 2, 0, -1}));  // m's cell joins a, the nearer
+
+  TriMesh tetrahedron = buildTriMesh({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)},
+                                     {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}})
+                            .value();
+  const TriMesh closed = tetrahedron;
+  std::vector<SurfacePoint> points(4, SurfacePoint::atVertex(0));
+  std::vector<int> cells = {0, 1, 2, 3};
+  EXPECT_FALSE(removeEar(tetrahedron, points, cells, 0));
+  EXPECT_EQ(tetrahedron.triangles, closed.triangles);
+  EXPECT_EQ(cells, (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_TRUE(sharpEars(closed, 10.0).empty());
+}
+
 }  // namespace
 }  // namespace gr

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/mesh/vcg_mesh.h"
+#include "core/remesh/edge_collapse.h"
 #include "core/remesh/remesh_surface.h"
 #include "core/remesh/surface_relaxation.h"
 #include "tests/oracles/remesh_oracles.h"
@@ -101,7 +102,8 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgal,
 // boundary edges facing wide angles (SplitEdges::Boundary): cylinder_locally_refined at 30% (as
 // good by flipAndClimbUnder30 against CGAL at 2,430 vertices for our 2,485, worse against CGAL at
 // our count until these splits); and the last polishes (SurfaceRemeshParams::lastPolishVertices):
-// mannequin-devil at 5%, anchor_dense at 30%.
+// mannequin-devil at 5%, anchor_dense at 30%; and the sharp ears cut (SurfaceRemeshParams::cutSharpEars):
+// lion at 10%.
 class RemeshAnglesAgainstCgalAtOtherCounts : public ::testing::TestWithParam<std::pair<std::string, int>> {};
 
 TEST_P(RemeshAnglesAgainstCgalAtOtherCounts, SmallestAngleAndShareUnder30AtLeastAsGood) {
@@ -126,7 +128,8 @@ INSTANTIATE_TEST_SUITE_P(
         std::pair<std::string, int>{"b9_mesh.off", 30}, std::pair<std::string, int>{"mech-holes-shark.off", 5},
         std::pair<std::string, int>{"ellipsoid.off", 5}, std::pair<std::string, int>{"pig.off", 5},
         std::pair<std::string, int>{"cylinder_locally_refined.off", 30},
-        std::pair<std::string, int>{"mannequin-devil.off", 5}, std::pair<std::string, int>{"anchor_dense.off", 30}),
+        std::pair<std::string, int>{"mannequin-devil.off", 5}, std::pair<std::string, int>{"anchor_dense.off", 30},
+        std::pair<std::string, int>{"lion.off", 10}),
     [](const ::testing::TestParamInfo<std::pair<std::string, int>>& p) {
       return test::testNameOfFile(p.param.first) + "_" + std::to_string(p.param.second);
     });
@@ -185,6 +188,13 @@ Figures figuresOf(const BeforeAndAfter& b) {
   return {test::recountAngles(b.before->mesh), test::recountAngles(b.after->mesh),
           oracle::twoSidedDistance(b.before->mesh, b.input).max / diagonal,
           oracle::twoSidedDistance(b.after->mesh, b.input).max / diagonal};
+}
+
+/// Prints f under `what` (the mesh, the count, what was kept).
+void printFigures(const std::string& what, const Figures& f) {
+  std::printf("%s: smallest %.2f -> %.2f deg, %.3f -> %.3f %% under 30, Hausdorff %.6f -> %.6f %%\n", what.c_str(),
+              f.before.smallestDegrees, f.after.smallestDegrees, 100 * f.before.shareBelow30,
+              100 * f.after.shareBelow30, 100 * f.distanceBefore, 100 * f.distanceAfter);
 }
 
 /// b's second output has the input's topology (recounted) and, as the input, no crossing faces (CGAL).
@@ -386,11 +396,7 @@ TEST(RemeshAngles, LastPolishesRaiseTheSmallestAngleNotTheDistance) {
   ASSERT_TRUE(b.after) << b.after.status().message;
   ASSERT_LE(b.after->mesh.vertexCount(), SurfaceRemeshParams{}.lastPolishVertices);
   const Figures f = figuresOf(b);
-  std::printf(
-      "anchor_dense at 30%%: smallest %.2f -> %.2f deg, %.3f -> %.3f %% under 30, Hausdorff %.4f -> %.4f %% "
-      "(%d last polishes kept)\n",
-      f.before.smallestDegrees, f.after.smallestDegrees, 100 * f.before.shareBelow30, 100 * f.after.shareBelow30,
-      100 * f.distanceBefore, 100 * f.distanceAfter, b.after->lastPolishes);
+  printFigures("anchor_dense at 30% (" + std::to_string(b.after->lastPolishes) + " last polishes kept)", f);
   EXPECT_EQ(b.before->lastPolishes, 0);
   EXPECT_GE(b.after->lastPolishes, 1);
   EXPECT_EQ(b.after->mesh.vertexCount(), b.before->mesh.vertexCount());
@@ -435,6 +441,56 @@ TEST(RemeshAngles, LastPolishesFartherFromTheInputAreRefused) {
   }
 
   EXPECT_EQ(b.after->lastPolishes, 0);
+  EXPECT_EQ(b.after->mesh.positions, b.before->mesh.positions);
+  EXPECT_EQ(b.after->mesh.triangles, b.before->mesh.triangles);
+}
+
+// Sharp ears cut last (SurfaceRemeshParams::cutSharpEars): lion at 10% kept its input's own ear
+// (a triangle of 8 degrees at a corner of its boundary) as an output ear of 10.5 degrees, the
+// output's smallest angle. Cut, the smallest angle is the next one's (20.2; CGAL at our count
+// 17.8), one face fewer under 30 degrees, one vertex fewer, the two-sided distance to the input
+// by the oracle no larger (its largest is elsewhere); the input's topology recounted, no
+// crossing faces (CGAL).
+TEST(RemeshAngles, SharpEarsAreCutWhereTheDistanceDoesNotGrow) {
+  const BeforeAndAfter b = remeshBeforeAndAfter("lion.off", 10, [](SurfaceRemeshParams& p) { p.cutSharpEars = false; });
+  ASSERT_TRUE(b.before) << b.before.status().message;
+  ASSERT_TRUE(b.after) << b.after.status().message;
+  const Figures f = figuresOf(b);
+  printFigures("lion at 10% (" + std::to_string(b.after->sharpEars) + " sharp ears cut)", f);
+  EXPECT_EQ(b.before->sharpEars, 0);
+  EXPECT_GE(b.after->sharpEars, 1);
+  EXPECT_EQ(b.after->mesh.vertexCount(), b.before->mesh.vertexCount() - b.after->sharpEars);
+  EXPECT_EQ(b.after->removedEars, b.before->removedEars + b.after->sharpEars);
+  EXPECT_GT(f.after.smallestDegrees, f.before.smallestDegrees + 5.0);
+  EXPECT_LT(f.after.shareBelow30, f.before.shareBelow30);
+  EXPECT_LE(f.distanceAfter, f.distanceBefore);
+  expectValidWithoutCrossings(b);
+}
+
+// A sharp ear is kept where its cut takes the output farther from the input: lion at 30% (the same
+// ear of the input, 12.0 degrees in the output). Cut directly (removeEar), the smallest angle
+// rises (22.7) but the oracle's two-sided distance grows (1.2373 -> 1.2388% of the diagonal: the
+// input's spike is now the farthest point); the remesh keeps the output without the cut.
+TEST(RemeshAngles, SharpEarsFartherFromTheInputAreKept) {
+  const BeforeAndAfter b = remeshBeforeAndAfter("lion.off", 30, [](SurfaceRemeshParams& p) { p.cutSharpEars = false; });
+  ASSERT_TRUE(b.before) << b.before.status().message;
+  ASSERT_TRUE(b.after) << b.after.status().message;
+  const std::vector<int> ears = sharpEars(b.before->mesh, b.before->mesh.meanEdgeLength());
+  ASSERT_FALSE(ears.empty());
+  TriMesh cut = b.before->mesh;
+  std::vector<SurfacePoint> origin = b.before->origin;
+  std::vector<int> cell = b.before->cell;
+  ASSERT_TRUE(removeEar(cut, origin, cell, ears.front()));
+  const double diagonal = b.input.boundingBoxDiagonal();
+  const double smallest = test::recountAngles(b.before->mesh).smallestDegrees;
+  const double higher = test::recountAngles(cut).smallestDegrees;
+  const double distance = oracle::twoSidedDistance(b.before->mesh, b.input).max / diagonal;
+  const double farther = oracle::twoSidedDistance(cut, b.input).max / diagonal;
+  std::printf("lion at 30%%, its sharpest ear cut: smallest %.2f -> %.2f deg, Hausdorff %.4f -> %.4f %%\n", smallest,
+              higher, 100 * distance, 100 * farther);
+  EXPECT_GT(higher, smallest + 5.0);
+  EXPECT_GT(farther, distance);
+  EXPECT_EQ(b.after->sharpEars, 0);
   EXPECT_EQ(b.after->mesh.positions, b.before->mesh.positions);
   EXPECT_EQ(b.after->mesh.triangles, b.before->mesh.triangles);
 }

@@ -32,36 +32,36 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
                : std::string()) +
           ": " + count(r.mesh.vertexCount()) + " vertices, " + count(r.mesh.faceCount()) + " faces on the new layer '" +
           label.toStdString() + "'");
-  ctx.log(
-      "Samples: " + count(r.sampledCount) + " by farthest-point sampling" +
-      (r.lloydIterations > 0 ? " moved by " + count(r.lloydIterations) + " geodesic Lloyd iterations (their energy " +
-                                   formatNumber(100 * (r.lloydEnergyRatio - 1.0), "%+.1f") + "%)"
-                             : std::string()) +
-      ", " + count(r.addedSamples) + " added to make the triangulation valid (" + rounds(r.repairRounds) +
-      (r.crossingRounds > 0 ? ", " + count(r.crossingRounds) + " of them where output triangles crossed"
-                            : std::string()) +
-      ")" +
-      (r.droppedSamples > 0 ? ", " + count(r.droppedSamples) + " left out (nearest to no vertex)" : std::string()) +
-      (r.collapsedVertices > 0
-           ? ", " + count(r.collapsedVertices) + " removed by edge collapses to reach the count asked for"
-           : std::string()) +
-      (r.removedEars > r.sharpEars
-           ? ", " + count(r.removedEars - r.sharpEars) +
-                 " removed with flat ears off the boundary (a triangle with two boundary edges and an "
-                 "angle under 30 deg, its tip near its base, which the boundary then follows)"
-           : std::string()) +
-      (r.sharpEars > 0 ? ", " + count(r.sharpEars) +
-                             " removed with sharp ears off the boundary (a spike: a triangle with two boundary edges "
-                             "and its smallest angle, under 30 deg, between them, shorter than an edge; cut where "
-                             "the distance to the input does not grow)"
-                       : std::string()) +
-      (r.splitVertices > 0 ? ", " + count(r.splitVertices) +
-                                 " added by splitting the edge facing a wide angle of triangles under 30 deg (" +
-                                 rounds(r.splitRounds) + ")"
-                           : std::string()) +
-      "; covering radius " + formatNumber(r.coveringRadius, "%.4g") +
-      (commit.weighted ? " (a travel time: distance over speed)" : std::string()) +
-      (r.flippedEdges > 0 ? "; " + count(r.flippedEdges) + " edges flipped to Delaunay" : std::string()));
+  ctx.log("Samples: " + count(r.sampledCount) + " by farthest-point sampling" +
+          (r.lloydIterations > 0
+               ? " moved by " + count(r.lloydIterations) + " geodesic Lloyd iterations (their energy " +
+                     formatNumber(100 * (r.lloydEnergyRatio - 1.0), "%+.1f") + "%)"
+               : std::string()) +
+          ", " + count(r.addedSamples) + " added to make the triangulation valid (" + rounds(r.repairRounds) +
+          (r.crossingRounds > 0 ? ", " + count(r.crossingRounds) + " of them where output triangles crossed"
+                                : std::string()) +
+          ")" +
+          (r.droppedSamples > 0 ? ", " + count(r.droppedSamples) + " left out (nearest to no vertex)" : std::string()) +
+          (r.collapsedVertices > 0
+               ? ", " + count(r.collapsedVertices) + " removed by edge collapses to reach the count asked for"
+               : std::string()) +
+          (r.removedEars > r.thinEars
+               ? ", " + count(r.removedEars - r.thinEars) +
+                     " removed with flat ears off the boundary (a triangle with two boundary edges and an "
+                     "angle under 30 deg, its tip near its base, which the boundary then follows)"
+               : std::string()) +
+          (r.thinEars > 0 ? ", " + count(r.thinEars) +
+                                " removed with thin ears off the boundary (a triangle with two boundary edges and an "
+                                "angle under 30 deg, its tip within an edge of its base; cut where the distance to the "
+                                "input does not grow)"
+                          : std::string()) +
+          (r.splitVertices > 0 ? ", " + count(r.splitVertices) +
+                                     " added by splitting the edge facing a wide angle of triangles under 30 deg (" +
+                                     rounds(r.splitRounds) + ")"
+                               : std::string()) +
+          "; covering radius " + formatNumber(r.coveringRadius, "%.4g") +
+          (commit.weighted ? " (a travel time: distance over speed)" : std::string()) +
+          (r.flippedEdges > 0 ? "; " + count(r.flippedEdges) + " edges flipped to Delaunay" : std::string()));
 }
 
 /// When the repair added samples and the sampling was redone to land at the count asked for

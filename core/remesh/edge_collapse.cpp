@@ -336,16 +336,17 @@ CollapseResult removeFlatEars(TriMesh& mesh, std::vector<SurfacePoint>& origin, 
   return r;
 }
 
-std::vector<int> sharpEars(const TriMesh& mesh, double maxDepth) {
-  std::vector<std::pair<double, int>> ears;  // (angle at the tip, face)
+std::vector<int> thinEars(const TriMesh& mesh, double maxDepth) {
+  std::vector<std::pair<double, int>> ears;  // (smallest angle, face)
   for (int f = 0; f < mesh.faceCount(); ++f) {
     const int tip = earCorner(mesh, f);
     if (tip < 0) continue;
     const Vec3 &pm = mesh.positions[mesh.vertex(tip)], &pa = mesh.positions[mesh.vertex(TriMesh::next(tip))],
                &pb = mesh.positions[mesh.vertex(TriMesh::prev(tip))];
-    const double atTip = angleAt(pm, pa, pb), base = (pb - pa).norm();
-    if (!(atTip < kEarAngle) || atTip > std::min(angleAt(pa, pb, pm), angleAt(pb, pm, pa)) || !(base > 0)) continue;
-    if ((pa - pm).cross(pb - pm).norm() / base <= maxDepth) ears.push_back({atTip, f});
+    const double smallest = std::min({angleAt(pm, pa, pb), angleAt(pa, pb, pm), angleAt(pb, pm, pa)});
+    const double base = (pb - pa).norm();
+    if (smallest < kEarAngle && base > 0 && (pa - pm).cross(pb - pm).norm() / base <= maxDepth)
+      ears.push_back({smallest, f});
   }
   std::sort(ears.begin(), ears.end());
   std::vector<int> faces;

@@ -62,16 +62,18 @@ constexpr int kEarRounds = 8;                     ///< rounds of removeFlatEars 
 CollapseResult removeFlatEars(TriMesh& mesh, std::vector<SurfacePoint>& origin, std::vector<int>& cell,
                               double maxHeight);
 
-/// Sharp ears off the output's boundary: ears (as above: the tip m in no other face, its third
-/// edge interior) whose smallest angle, under kEarAngle, is at m, and m within `maxDepth` of the
-/// line of the third edge: a spike of the boundary, the faces sharpest first. Removing one
-/// (removeEar) cuts the spike, as deep as the ear is tall, so the remesh judges each by its
-/// distance to the input (cutSharpEars in remesh_surface.cpp). lion at 10%: the input's own ear,
-/// a triangle of 8 degrees at a corner of its boundary, made an output ear of 10.5 degrees, 0.32
-/// mean edge lengths tall, the output's smallest angle (the next: 20.2).
-std::vector<int> sharpEars(const TriMesh& mesh, double maxDepth);
+/// Thin ears off the output's boundary: ears (as above: the tip m in no other face, its third edge
+/// interior) with an angle under kEarAngle, at the tip (a spike of the boundary) or at the base
+/// (an ear too tall for removeFlatEars), m within `maxDepth` of the line of the third edge; the
+/// faces by their smallest angle, thinnest first. Removing one (removeEar) cuts the boundary along
+/// the third edge, as deep as the ear is tall, so the remesh judges each by its distance to the
+/// input (cutThinEars in remesh_surface.cpp). lion at 10%: the input's own ear, a triangle of 8
+/// degrees at a corner of its boundary, made an output ear of 10.5 degrees, 0.32 mean edge
+/// lengths tall, the output's smallest angle (the next: 20.2); through MeshLab's float
+/// coordinates, that cut leaves an ear of 11.1 degrees at its base, 0.13 of its base tall.
+std::vector<int> thinEars(const TriMesh& mesh, double maxDepth);
 
-/// Removes the ear `face` (an ear as removeFlatEars and sharpEars take) with its tip, as
+/// Removes the ear `face` (an ear as removeFlatEars and thinEars take) with its tip, as
 /// removeFlatEars does (the tip's cell joins the nearer end of the third edge); false, with
 /// nothing changed, if `face` is no ear or the result would not be valid.
 bool removeEar(TriMesh& mesh, std::vector<SurfacePoint>& origin, std::vector<int>& cell, int face);

@@ -908,20 +908,20 @@ void polishAgain(const TriMesh& input, const Prepared& prepared, const SurfaceRe
   r.times.relaxation = relaxation + lap(clock);
 }
 
-/// The sharp ears (sharpEars in edge_collapse.h) of an output the relaxation ran on whose tip is
-/// within one mean output edge of the ear's third edge (a spike shorter than an edge, under the
-/// output's resolution, as crease chains shorter than an edge are no creases), cut sharpest first,
-/// each kept only if the distance to the input (outputDistance, the input's centroids and
-/// midpoints too) does not grow; kEarRounds tried at most. A cut takes a face under 30 degrees
-/// away and changes no other: no angle falls, nothing new crosses.
-void cutSharpEars(const TriMesh& input, const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
-  if (!params.cutSharpEars || params.relaxation.iterations <= 0 || r.looksLikeTriangleSoup || r.inputKept) return;
+/// The thin ears (thinEars in edge_collapse.h) of an output the relaxation ran on whose tip is
+/// within one mean output edge of the ear's third edge (a spike or an ear shorter than an edge,
+/// under the output's resolution, as crease chains shorter than an edge are no creases), cut
+/// thinnest first, each kept only if the distance to the input (outputDistance, the input's
+/// centroids and midpoints too) does not grow; kEarRounds tried at most. A cut takes a face under
+/// 30 degrees away and changes no other: no angle falls, nothing new crosses.
+void cutThinEars(const TriMesh& input, const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
+  if (!params.cutThinEars || params.relaxation.iterations <= 0 || r.looksLikeTriangleSoup || r.inputKept) return;
   auto clock = std::chrono::steady_clock::now();
   constexpr DistanceSamples kInputSamples = DistanceSamples::VerticesMidpointsCentroids;
   double distance = -1.0;  // r's, measured when first needed
   for (int tried = 0, cut = 1; cut && tried < kEarRounds;) {
     cut = 0;
-    for (const int face : sharpEars(r.mesh, r.mesh.meanEdgeLength())) {
+    for (const int face : thinEars(r.mesh, r.mesh.meanEdgeLength())) {
       if (tried++ == kEarRounds) break;
       SurfaceRemeshResult without = r;
       if (!removeEar(without.mesh, without.origin, without.cell, face)) continue;
@@ -931,14 +931,14 @@ void cutSharpEars(const TriMesh& input, const SurfaceRemeshParams& params, Surfa
       distance = d;
       r = std::move(without);
       ++r.removedEars;
-      ++r.sharpEars;
+      ++r.thinEars;
       cut = 1;
       break;  // the faces are numbered anew
     }
   }
-  if (r.sharpEars > 0 && r.crossingPairs > 0)  // a cut face may have crossed
+  if (r.thinEars > 0 && r.crossingPairs > 0)  // a cut face may have crossed
     r.crossingPairs = static_cast<int>(selfIntersectingFaces(r.mesh).size());
-  if (r.sharpEars > 0 && r.crossingPairs == 0 && r.fewestCount > 0)
+  if (r.thinEars > 0 && r.crossingPairs == 0 && r.fewestCount > 0)
     r.fewestCount = std::min(r.fewestCount, r.mesh.vertexCount());
   r.times.relaxation += lap(clock);
 }
@@ -1096,7 +1096,7 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   if (Status s = restartSmallOutput(input, metric, prepared, p, progress.sub(0.0, remeshShare), *r); !s) return s;
   splitAndPolish(prepared, p, *r);
   polishAgain(input, prepared, p, *r);
-  cutSharpEars(input, p, *r);
+  cutThinEars(input, p, *r);
   r->times.prepare += prepared.prepareSeconds;  // once for the call, whatever start was kept
   r->times.engine += prepared.engineSeconds;
   auto clock = std::chrono::steady_clock::now();

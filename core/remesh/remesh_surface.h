@@ -207,14 +207,14 @@ struct SurfaceRemeshParams {
   /// it they cost most and bring least (fandisk at 10%, 647 vertices at 40.3 degrees: 45 -> 212
   /// ms for 42.2 degrees; bear at 5%, 43.7 degrees: 52 -> 378 ms).
   static constexpr double kLastPolishBelowDegrees = 36.0;
-  /// Last, sharp ears cut off the boundary (sharpEars in edge_collapse.h: a spike, its smallest
-  /// angle under 30 degrees at its tip, the tip within one mean output edge of the ear's base),
-  /// each kept only if the distance to the input (its centroids and midpoints too) does not grow;
-  /// the relaxation's outputs only. lion at 10%: its input's own ear of 8 degrees made the
-  /// output's smallest angle, 10.5 -> 20.2 degrees (CGAL at our count 17.8), the oracle's two-sided
-  /// Hausdorff the same; at 30% the cut (12.0 -> 22.7) would take it farther, so it is refused.
-  /// false = spikes kept.
-  bool cutSharpEars = true;
+  /// Last, thin ears cut off the boundary (thinEars in edge_collapse.h: an ear with an angle under
+  /// 30 degrees, a spike or one too tall to be flat, its tip within one mean output edge of its
+  /// base), each kept only if the distance to the input (its centroids and midpoints too) does
+  /// not grow; the relaxation's outputs only. lion at 10%: its input's own ear of 8 degrees made
+  /// the output's smallest angle, 10.5 -> 20.2 degrees (CGAL at our count 17.8), the oracle's
+  /// two-sided Hausdorff the same; at 30% the cut (12.0 -> 22.7) would take it farther, so it is
+  /// refused. false = ears kept.
+  bool cutThinEars = true;
   /// Also measure the output: angle statistics and (measureDistance) the surface distance to the
   /// input both ways (the figures of the filters' log).
   bool measure = true;
@@ -295,9 +295,9 @@ struct SurfaceRemeshResult {
   /// droppedSamples - collapsedVertices - removedEars + splitVertices.
   int collapsedVertices = 0;
   /// Ears removed off the boundary, each with its tip: flat ones (removeFlatEars in
-  /// edge_collapse.h) and, last, sharp ones (sharpEars), counted in sharpEars too.
+  /// edge_collapse.h) and, last, thin ones (cutThinEars), counted in thinEars too.
   int removedEars = 0;
-  int sharpEars = 0;
+  int thinEars = 0;
   /// Edges split where faces under 30 degrees were held by a wide angle (splitWideFaces in
   /// surface_relaxation.h; SurfaceRemeshParams::splitRounds), in splitRounds rounds kept.
   int splitVertices = 0;

@@ -695,14 +695,14 @@ TEST_F(FilterInProcess, UniformRemeshLogsItsLastPolishes) {
       << logText();
 }
 
-// The sharp ears cut last (SurfaceRemeshParams::cutSharpEars) are logged: lion at 10%, its
+// The thin ears cut last (SurfaceRemeshParams::cutThinEars) are logged: lion at 10%, its
 // input's own spike on the boundary (as the core run on the filter's input says).
-TEST_F(FilterInProcess, UniformRemeshLogsItsSharpEarsCut) {
+TEST_F(FilterInProcess, UniformRemeshLogsItsThinEarsCut) {
   const std::optional<SurfaceRemeshResult> r = uniformAndItsCore("lion.off", 10);
   ASSERT_TRUE(r) << logText();
-  ASSERT_GE(r->sharpEars, 1);
+  ASSERT_GE(r->thinEars, 1);
   EXPECT_EQ(doc.mm()->cm.VN(), r->mesh.vertexCount());
-  EXPECT_NE(logText().find(std::to_string(r->sharpEars) + " removed with sharp ears off the boundary (a spike"),
+  EXPECT_NE(logText().find(std::to_string(r->thinEars) + " removed with thin ears off the boundary (a triangle"),
             std::string::npos)
       << logText();
 }

@@ -337,7 +337,8 @@ TEST_P(UniformAcceptance, TopologyKeptThroughMeshlabserver) {
   const int added = test::numberBefore(run.output, "added to make the triangulation valid");
   const int leftOut = std::max(0, test::numberBefore(run.output, "left out (nearest to no vertex)"));
   const int collapsed = std::max(0, test::numberBefore(run.output, "removed by edge collapses")) +
-                        std::max(0, test::numberBefore(run.output, "removed with flat ears"));
+                        std::max(0, test::numberBefore(run.output, "removed with flat ears")) +
+                        std::max(0, test::numberBefore(run.output, "removed with thin ears"));
   ASSERT_GE(added, 0) << run.output;
   ASSERT_GT(sampled, 0) << run.output;
   const int split = std::max(0, test::numberBefore(run.output, "added by splitting"));

@@ -182,20 +182,20 @@ TEST(FlatEars, FlatEarsGoFatOrTallOnesStay) {
   }
 }
 
-// sharpEars: ears whose smallest angle, under 30 degrees, is at the tip, within maxDepth of their
-// base, sharpest first; a flat ear (its small angles at the base) and a fat one are none.
-// removeEar takes one with its tip (the topology recounted, the cell onto the nearer end) and
-// refuses a face that is no ear, changing nothing.
-TEST(SharpEars, SpikesShorterThanTheDepthAreFoundSharpestFirstAndRemoved) {
+// thinEars: ears with an angle under 30 degrees, at the tip or at the base, within maxDepth of
+// their base, thinnest first; a fat ear is none. removeEar takes one with its tip (the topology
+// recounted, the cell onto the nearer end) and refuses a face that is no ear, changing nothing.
+TEST(ThinEars, EarsWithinTheDepthAreFoundThinnestFirstAndRemoved) {
   // a (0), b (1), c (2) above the edge (a, b), m (3) below it: two ears, tips m and c.
   const auto twoEars = [](const Vec3& m) {
     return buildTriMesh({Vec3(0, 0, 0), Vec3(0.2, 0, 0), Vec3(0.1, 0.8, 0), m}, {{0, 3, 1}, {0, 1, 2}}).value();
   };
   const TriMesh spike = twoEars(Vec3(0.08, -1.0, 0));  // tip angles 11.4 (m) and 14.3 (c) degrees
-  EXPECT_EQ(sharpEars(spike, 1.5), (std::vector<int>{0, 1}));
-  EXPECT_EQ(sharpEars(spike, 0.9), (std::vector<int>{1}));                          // m is 1.0 from (a, b), c 0.8
-  EXPECT_EQ(sharpEars(twoEars(Vec3(0.1, -0.005, 0)), 1.5), (std::vector<int>{1}));  // m's ear is flat
-  EXPECT_EQ(sharpEars(twoEars(Vec3(0.1, -0.1, 0)), 1.5), (std::vector<int>{1}));    // m's is 90 degrees
+  EXPECT_EQ(thinEars(spike, 1.5), (std::vector<int>{0, 1}));
+  EXPECT_EQ(thinEars(spike, 0.9), (std::vector<int>{1}));  // m is 1.0 from (a, b), c 0.8
+  // m's ear flat (its angles at the base 2.9 degrees): the thinner; at 90 degrees (45 at the base) none.
+  EXPECT_EQ(thinEars(twoEars(Vec3(0.1, -0.005, 0)), 1.5), (std::vector<int>{0, 1}));
+  EXPECT_EQ(thinEars(twoEars(Vec3(0.1, -0.1, 0)), 1.5), (std::vector<int>{1}));
 
   TriMesh mesh = spike;
   std::vector<SurfacePoint> origin;
@@ -220,7 +220,7 @@ TEST(SharpEars, SpikesShorterThanTheDepthAreFoundSharpestFirstAndRemoved) {
   EXPECT_FALSE(removeEar(tetrahedron, points, cells, 0));
   EXPECT_EQ(tetrahedron.triangles, closed.triangles);
   EXPECT_EQ(cells, (std::vector<int>{0, 1, 2, 3}));
-  EXPECT_TRUE(sharpEars(closed, 10.0).empty());
+  EXPECT_TRUE(thinEars(closed, 10.0).empty());
 }
 
 }  // namespace

@@ -102,7 +102,7 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgal,
 // boundary edges facing wide angles (SplitEdges::Boundary): cylinder_locally_refined at 30% (as
 // good by flipAndClimbUnder30 against CGAL at 2,430 vertices for our 2,485, worse against CGAL at
 // our count until these splits); and the last polishes (SurfaceRemeshParams::lastPolishVertices):
-// mannequin-devil at 5%, anchor_dense at 30%; and the sharp ears cut (SurfaceRemeshParams::cutSharpEars):
+// mannequin-devil at 5%, anchor_dense at 30%; and the thin ears cut (SurfaceRemeshParams::cutThinEars):
 // lion at 10%.
 class RemeshAnglesAgainstCgalAtOtherCounts : public ::testing::TestWithParam<std::pair<std::string, int>> {};
 
@@ -445,37 +445,37 @@ TEST(RemeshAngles, LastPolishesFartherFromTheInputAreRefused) {
   EXPECT_EQ(b.after->mesh.triangles, b.before->mesh.triangles);
 }
 
-// Sharp ears cut last (SurfaceRemeshParams::cutSharpEars): lion at 10% kept its input's own ear
+// Thin ears cut last (SurfaceRemeshParams::cutThinEars): lion at 10% kept its input's own ear
 // (a triangle of 8 degrees at a corner of its boundary) as an output ear of 10.5 degrees, the
 // output's smallest angle. Cut, the smallest angle is the next one's (20.2; CGAL at our count
 // 17.8), one face fewer under 30 degrees, one vertex fewer, the two-sided distance to the input
 // by the oracle no larger (its largest is elsewhere); the input's topology recounted, no
 // crossing faces (CGAL).
-TEST(RemeshAngles, SharpEarsAreCutWhereTheDistanceDoesNotGrow) {
-  const BeforeAndAfter b = remeshBeforeAndAfter("lion.off", 10, [](SurfaceRemeshParams& p) { p.cutSharpEars = false; });
+TEST(RemeshAngles, ThinEarsAreCutWhereTheDistanceDoesNotGrow) {
+  const BeforeAndAfter b = remeshBeforeAndAfter("lion.off", 10, [](SurfaceRemeshParams& p) { p.cutThinEars = false; });
   ASSERT_TRUE(b.before) << b.before.status().message;
   ASSERT_TRUE(b.after) << b.after.status().message;
   const Figures f = figuresOf(b);
-  printFigures("lion at 10% (" + std::to_string(b.after->sharpEars) + " sharp ears cut)", f);
-  EXPECT_EQ(b.before->sharpEars, 0);
-  EXPECT_GE(b.after->sharpEars, 1);
-  EXPECT_EQ(b.after->mesh.vertexCount(), b.before->mesh.vertexCount() - b.after->sharpEars);
-  EXPECT_EQ(b.after->removedEars, b.before->removedEars + b.after->sharpEars);
+  printFigures("lion at 10% (" + std::to_string(b.after->thinEars) + " thin ears cut)", f);
+  EXPECT_EQ(b.before->thinEars, 0);
+  EXPECT_GE(b.after->thinEars, 1);
+  EXPECT_EQ(b.after->mesh.vertexCount(), b.before->mesh.vertexCount() - b.after->thinEars);
+  EXPECT_EQ(b.after->removedEars, b.before->removedEars + b.after->thinEars);
   EXPECT_GT(f.after.smallestDegrees, f.before.smallestDegrees + 5.0);
   EXPECT_LT(f.after.shareBelow30, f.before.shareBelow30);
   EXPECT_LE(f.distanceAfter, f.distanceBefore);
   expectValidWithoutCrossings(b);
 }
 
-// A sharp ear is kept where its cut takes the output farther from the input: lion at 30% (the same
+// A thin ear is kept where its cut takes the output farther from the input: lion at 30% (the same
 // ear of the input, 12.0 degrees in the output). Cut directly (removeEar), the smallest angle
 // rises (22.7) but the oracle's two-sided distance grows (1.2373 -> 1.2388% of the diagonal: the
 // input's spike is now the farthest point); the remesh keeps the output without the cut.
-TEST(RemeshAngles, SharpEarsFartherFromTheInputAreKept) {
-  const BeforeAndAfter b = remeshBeforeAndAfter("lion.off", 30, [](SurfaceRemeshParams& p) { p.cutSharpEars = false; });
+TEST(RemeshAngles, ThinEarsFartherFromTheInputAreKept) {
+  const BeforeAndAfter b = remeshBeforeAndAfter("lion.off", 30, [](SurfaceRemeshParams& p) { p.cutThinEars = false; });
   ASSERT_TRUE(b.before) << b.before.status().message;
   ASSERT_TRUE(b.after) << b.after.status().message;
-  const std::vector<int> ears = sharpEars(b.before->mesh, b.before->mesh.meanEdgeLength());
+  const std::vector<int> ears = thinEars(b.before->mesh, b.before->mesh.meanEdgeLength());
   ASSERT_FALSE(ears.empty());
   TriMesh cut = b.before->mesh;
   std::vector<SurfacePoint> origin = b.before->origin;
@@ -486,11 +486,11 @@ TEST(RemeshAngles, SharpEarsFartherFromTheInputAreKept) {
   const double higher = test::recountAngles(cut).smallestDegrees;
   const double distance = oracle::twoSidedDistance(b.before->mesh, b.input).max / diagonal;
   const double farther = oracle::twoSidedDistance(cut, b.input).max / diagonal;
-  std::printf("lion at 30%%, its sharpest ear cut: smallest %.2f -> %.2f deg, Hausdorff %.4f -> %.4f %%\n", smallest,
+  std::printf("lion at 30%%, its thinnest ear cut: smallest %.2f -> %.2f deg, Hausdorff %.4f -> %.4f %%\n", smallest,
               higher, 100 * distance, 100 * farther);
   EXPECT_GT(higher, smallest + 5.0);
   EXPECT_GT(farther, distance);
-  EXPECT_EQ(b.after->sharpEars, 0);
+  EXPECT_EQ(b.after->thinEars, 0);
   EXPECT_EQ(b.after->mesh.positions, b.before->mesh.positions);
   EXPECT_EQ(b.after->mesh.triangles, b.before->mesh.triangles);
 }

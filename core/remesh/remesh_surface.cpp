@@ -865,11 +865,13 @@ void polishOutput(const Prepared& prepared, const SurfaceRemeshParams& params, S
   r.times.relaxation += lap(clock);
 }
 
-/// The two-sided distance between the output and the input at remeshDistances' samples (on the
-/// input's side, `inputSamples`).
-double outputDistance(const TriMesh& input, const SurfaceRemeshResult& r,
-                      DistanceSamples inputSamples = DistanceSamples::Vertices) {
-  const RemeshDistances d = remeshDistances(input, r.mesh, r.cell, r.origin, cellsAreVoronoi(r), inputSamples);
+/// The two-sided distance between the output and the input at remeshDistances' samples, the
+/// input's face centroids and side midpoints too: the judge of the starts, the last polishes and
+/// the ears' cuts. (At the input's vertices alone it let starts and polishes be kept that the
+/// oracle finds farther: P at 30% 42.1 -> 45.7%, helmet at 10% 16.6 -> 17.6% of the diagonal.)
+double outputDistance(const TriMesh& input, const SurfaceRemeshResult& r) {
+  const RemeshDistances d =
+      remeshDistances(input, r.mesh, r.cell, r.origin, cellsAreVoronoi(r), DistanceSamples::VerticesMidpointsCentroids);
   return std::max(d.toInput.max, d.fromInput.max);
 }
 
@@ -896,9 +898,8 @@ void polishAgain(const TriMesh& input, const Prepared& prepared, const SurfaceRe
     const AngleStatistics after = angleStatistics(polished.mesh);
     if (!betterAngles(after, before) || worseAngles(after, before) || polished.crossingPairs > r.crossingPairs)
       continue;
-    constexpr DistanceSamples kInputSamples = DistanceSamples::VerticesMidpointsCentroids;
-    if (distance < 0) distance = outputDistance(input, r, kInputSamples);
-    const double d = outputDistance(input, polished, kInputSamples);
+    if (distance < 0) distance = outputDistance(input, r);
+    const double d = outputDistance(input, polished);
     if (d > distance) continue;
     distance = d;
     before = after;
@@ -917,7 +918,6 @@ void polishAgain(const TriMesh& input, const Prepared& prepared, const SurfaceRe
 void cutThinEars(const TriMesh& input, const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
   if (!params.cutThinEars || params.relaxation.iterations <= 0 || r.looksLikeTriangleSoup || r.inputKept) return;
   auto clock = std::chrono::steady_clock::now();
-  constexpr DistanceSamples kInputSamples = DistanceSamples::VerticesMidpointsCentroids;
   double distance = -1.0;  // r's, measured when first needed
   for (int tried = 0, cut = 1; cut && tried < kEarRounds;) {
     cut = 0;
@@ -925,8 +925,8 @@ void cutThinEars(const TriMesh& input, const SurfaceRemeshParams& params, Surfac
       if (tried++ == kEarRounds) break;
       SurfaceRemeshResult without = r;
       if (!removeEar(without.mesh, without.origin, without.cell, face)) continue;
-      if (distance < 0) distance = outputDistance(input, r, kInputSamples);
-      const double d = outputDistance(input, without, kInputSamples);
+      if (distance < 0) distance = outputDistance(input, r);
+      const double d = outputDistance(input, without);
       if (d > distance) continue;
       distance = d;
       r = std::move(without);

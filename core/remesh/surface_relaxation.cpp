@@ -411,11 +411,34 @@ std::vector<Freedom> freedoms(const TriMesh& output, const std::vector<SurfacePo
   return freedom;
 }
 
+/// Per vertex of `mesh` (manifold), the first vertex of its boundary loop if that loop is shorter
+/// than `maxLength`, else -1.
+std::vector<int> tinyBoundaryLoops(const TriMesh& mesh, double maxLength) {
+  const int n = mesh.vertexCount();
+  std::vector<int> next(n, -1), loop(n, -1);  // next: along the boundary, as the faces run
+  for (int c = 0; c < 3 * mesh.faceCount(); ++c)
+    if (mesh.oppositeCorner[c] < 0) next[mesh.vertex(TriMesh::next(c))] = mesh.vertex(TriMesh::prev(c));
+  std::vector<char> seen(n, 0);
+  for (int v = 0; v < n; ++v) {
+    if (next[v] < 0 || seen[v]) continue;
+    double length = 0;
+    int u = v;
+    for (; u >= 0 && !seen[u]; u = next[u]) {
+      seen[u] = 1;
+      if (next[u] >= 0) length += (mesh.positions[next[u]] - mesh.positions[u]).norm();
+    }
+    if (u != v || !(length < maxLength)) continue;
+    for (int w = v; loop[w] < 0; w = next[w]) loop[w] = v;
+  }
+  return loop;
+}
+
 /// Moves the free vertices of the output, one at a time, on the input surface.
 class Relaxer {
  public:
   Relaxer(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input, const SurfaceWalker& walker,
-          double maxDeviation, double aim, const std::vector<char>& watched, const std::vector<double>* density)
+          double maxDeviation, double aim, const std::vector<char>& watched, const std::vector<double>* density,
+          double tinyLoopLength)
       : output_(output),
         pos_(output.positions),
         points_(points),
@@ -424,7 +447,8 @@ class Relaxer {
         walker_(walker),
         maxDeviation_(maxDeviation),
         aim_(aim),
-        watched_(watched) {}
+        watched_(watched),
+        tinyLoop_(tinyBoundaryLoops(output, tinyLoopLength * output.meanEdgeLength())) {}
 
   /// The faces with a watched corner, which a watched vertex's faces may not cross (collected
   /// again each round: the flips change the faces).
@@ -947,13 +971,15 @@ class Relaxer {
     return best;
   }
 
-  /// The three angles of each face around v with v at x (radians), into `out`.
+  /// The three angles of each face around v with v at x (radians), into `out`; the angle at v
+  /// left out where it faces the edge of a tiny loop (facesTinyLoop).
   void ringAngles(int v, const Vec3& x, std::vector<double>& out) const {
     out.clear();
     for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c) {
-      const Vec3& a = pos_[output_.vertex(TriMesh::next(*c))];
-      const Vec3& b = pos_[output_.vertex(TriMesh::prev(*c))];
-      out.push_back(angleAt(x, a, b));
+      const int ia = output_.vertex(TriMesh::next(*c)), ib = output_.vertex(TriMesh::prev(*c));
+      const Vec3& a = pos_[ia];
+      const Vec3& b = pos_[ib];
+      if (!facesTinyLoop(ia, ib)) out.push_back(angleAt(x, a, b));
       out.push_back(angleAt(a, x, b));
       out.push_back(angleAt(b, x, a));
     }
@@ -1121,13 +1147,21 @@ class Relaxer {
   }
   static constexpr int kCurveSamples = 12;  ///< curve points checked each way (curveNearby)
 
-  /// Smallest angle (radians) of the faces around v with v at position p, and their normals.
+  /// Whether the angle facing edge (a, b) does not count in a ring (ring, ringAngles): a and b on
+  /// one tiny loop (RelaxationParams::tinyLoopLength).
+  bool facesTinyLoop(int a, int b) const { return tinyLoop_[a] >= 0 && tinyLoop_[a] == tinyLoop_[b]; }
+
+  /// Smallest angle (radians) of the faces around v with v at position p, and their normals;
+  /// angles facing the edges of a tiny loop (facesTinyLoop) left out.
   double ring(int v, const Vec3& p, std::vector<Vec3>* normals) const {
     double largestCosine = -1;
     for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c) {
-      const Vec3& a = pos_[output_.vertex(TriMesh::next(*c))];
-      const Vec3& b = pos_[output_.vertex(TriMesh::prev(*c))];
-      largestCosine = std::max(largestCosine, smallestAngleCosine(p, a, b));
+      const int ia = output_.vertex(TriMesh::next(*c)), ib = output_.vertex(TriMesh::prev(*c));
+      const Vec3& a = pos_[ia];
+      const Vec3& b = pos_[ib];
+      largestCosine = facesTinyLoop(ia, ib)
+                          ? std::max({largestCosine, std::cos(angleAt(a, p, b)), std::cos(angleAt(b, p, a))})
+                          : std::max(largestCosine, smallestAngleCosine(p, a, b));
       if (normals) normals->push_back((a - p).cross(b - p));
     }
     return std::acos(largestCosine);
@@ -1225,6 +1259,7 @@ class Relaxer {
   double maxDeviation_;
   double aim_;                        ///< moves keep the ring's smallest angle at min(before, aim); none past it
   const std::vector<char>& watched_;  ///< per output vertex, or empty (RelaxationGuard::watched)
+  std::vector<int> tinyLoop_;         ///< per output vertex, its tiny loop (tinyBoundaryLoops) or -1
   std::vector<int> watchedFaces_;     ///< faces with a watched corner (collectWatchedFaces)
   std::vector<Vec3> before_, after_;  ///< normals of v's faces before and after a move
   int moves_ = 0;
@@ -1387,7 +1422,8 @@ Expected<RelaxationResult> relaxOnSurface(TriMesh& output, std::vector<SurfacePo
   }
   for (size_t v = 0; v < guard.watched.size(); ++v) r.watchedVertices += guard.watched[v] && !fixed[v];
   const double aim = params.raiseSmallestAngle ? kPi : Relaxer::kSmallAngle;
-  Relaxer relaxer(output, points, input, walker, params.maxDeviation, aim, guard.watched, params.density);
+  Relaxer relaxer(output, points, input, walker, params.maxDeviation, aim, guard.watched, params.density,
+                  params.tinyLoopLength);
   for (int it = 0; it < params.iterations; ++it) {
     relaxer.meanRound(fixed, freedom);
     // The output is manifold, oriented and has faces (checked above), and moves keep that.
@@ -1426,7 +1462,8 @@ Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfaceP
     fixed[v] |= pinned[v];
   }
   const std::vector<char> noneWatched;
-  Relaxer relaxer(output, points, input, walker, params.maxDeviation, kPi, noneWatched, params.density);
+  Relaxer relaxer(output, points, input, walker, params.maxDeviation, kPi, noneWatched, params.density,
+                  params.tinyLoopLength);
   for (int pass = 0; pass < kPolishPasses; ++pass) {
     const int moved = relaxer.polish(fixed, freedom, params.polishMarginDegrees * kDegree);
     // The output is manifold, oriented and has faces (checked above), and moves keep that.

@@ -371,6 +371,82 @@ TEST(SurfaceRelaxation, PolishNeverLowersTheSmallestAngleNorAddsFacesUnder30) {
   }
 }
 
+/// The point (x, y) of test::planeGrid(n) (the unit square) as a point of its faces: cell (i, j)
+/// holds faces 2 (j n + i) (under its diagonal) and 2 (j n + i) + 1 (over it).
+SurfacePoint onUnitGrid(int n, double x, double y) {
+  const int i = std::min(n - 1, static_cast<int>(x * n)), j = std::min(n - 1, static_cast<int>(y * n));
+  const double fx = x * n - i, fy = y * n - j;
+  const int cell = 2 * (j * n + i);
+  return fx >= fy ? SurfacePoint::inFace(cell, Vec3(1 - fx, fx - fy, fy))
+                  : SurfacePoint::inFace(cell + 1, Vec3(1 - fy, fx, fy - fx));
+}
+
+// A hole far smaller than the output's edges (a boundary loop of 0.03 mean edges, as the tiny
+// holes of ChineseDragon-10kv) is a point at the output's resolution: the faces on its three
+// edges are slivers whatever the ring around does. The relaxation and the polish leave them so
+// instead of drawing the ring in to widen them, which put 8 to 12 faces under 30 degrees around
+// each of those holes. Here: the hole, a ring of six free vertices (off their places) and a fixed
+// outer ring, on a plane.
+TEST(SurfaceRelaxation, TinyHolesKeepTheirRingAway) {
+  const int n = 200;
+  const TriMesh input = test::planeGrid(n);
+  const double hole = 0.0005, r = 0.1;  // the hole's and the free ring's radii, about (0.5, 0.5)
+  std::vector<Vec3> positions;
+  const auto at = [&](double radius, double degrees) {
+    positions.push_back(
+        Vec3(0.5 + radius * std::cos(degrees * kPi / 180), 0.5 + radius * std::sin(degrees * kPi / 180), 0));
+  };
+  for (int k = 0; k < 3; ++k) at(hole, 120 * k);                                                       // 0-2: the hole
+  for (int k = 0; k < 6; ++k) at(r * (1 + 0.15 * std::sin(2.0 * k)), 60 * k + 9 * std::cos(3.0 * k));  // 3-8: free
+  for (int k = 0; k < 6; ++k) at(2 * r, 60 * k + 30);                                                  // 9-14: fixed
+  const auto m = [](int k) { return 3 + (k + 6) % 6; };
+  const auto o = [](int k) { return 9 + (k + 6) % 6; };
+  std::vector<Tri> faces = {{0, m(0), m(1)}, {1, m(1), m(2)}, {1, m(2), m(3)}, {2, m(3), m(4)}, {2, m(4), m(5)},
+                            {0, m(5), m(0)}, {1, 0, m(1)},    {2, 1, m(3)},    {0, 2, m(5)}};
+  for (int k = 0; k < 6; ++k) {
+    faces.push_back({m(k), o(k), m(k + 1)});
+    faces.push_back({m(k + 1), o(k), o(k + 1)});
+  }
+  const TriMesh start = buildTriMesh(positions, faces).value();
+  struct Relaxed {
+    int under30 = 0, slivers = 0;  // faces under 30 degrees, and of them those on the hole's edges
+    double nearest = 1;            // the free vertices' nearest distance to the hole's centre
+  };
+  const auto relaxWith = [&](double tinyLoopLength) {
+    TriMesh out = start;
+    std::vector<SurfacePoint> points;
+    for (const Vec3& p : positions) points.push_back(onUnitGrid(n, p.x(), p.y()));
+    RelaxationParams params;
+    params.tinyLoopLength = tinyLoopLength;
+    EXPECT_TRUE(relaxOnSurface(out, points, input, params));
+    EXPECT_TRUE(polishOnSurface(out, points, input, params));
+    EXPECT_EQ(test::recount(out.triangles, out.vertexCount()).boundaryLoops, 2);
+    EXPECT_EQ(out.faceCount(), start.faceCount());
+    Relaxed r;
+    for (const Tri& t : out.triangles) {
+      const double smallest = test::recountAngles(buildTriMesh(out.positions, {t}).value()).smallestDegrees;
+      r.under30 += smallest < 30;
+      r.slivers += smallest < 30 && std::count_if(t.begin(), t.end(), [](int v) { return v < 3; }) == 2;
+    }
+    for (int v = 3; v < 9; ++v) r.nearest = std::min(r.nearest, (out.positions[v] - Vec3(0.5, 0.5, 0)).norm());
+    for (int v = 0; v < out.vertexCount(); ++v) {
+      EXPECT_LT((points[v].position(input) - out.positions[v]).norm(), 1e-12);
+      if (v < 3 || v >= 9) EXPECT_EQ(out.positions[v], start.positions[v]) << "boundary vertex " << v << " moved";
+    }
+    std::printf(
+        "tiny loops under %.2f edges: %d faces under 30 degrees (%d on the hole's edges), free ring %.4f "
+        "from the hole\n",
+        tinyLoopLength, r.under30, r.slivers, r.nearest);
+    return r;
+  };
+  const Relaxed every = relaxWith(0.0), kept = relaxWith(RelaxationParams{}.tinyLoopLength);
+  EXPECT_GT(every.under30, 3);  // every angle counted: the ring drawn in
+  EXPECT_LT(every.nearest, 0.5 * r);
+  EXPECT_EQ(kept.under30, 3);
+  EXPECT_EQ(kept.slivers, 3);
+  EXPECT_GT(kept.nearest, 0.5 * r);
+}
+
 TEST(SurfaceRelaxation, ZeroIterationsChangeNothing) {
   const TriMesh input = test::planeGrid(30, 1.0, 0.3, 3);
   const DelaunayResult d = triangulate(input, 80);

@@ -597,9 +597,11 @@ TEST(RemeshAngles, TinyHolesKeepOnlyTheirSlivers) {
     std::printf("hole %zu: %zu vertices, %.4f mean edges round\n", l, loops[l].size(), length / meanEdge);
     EXPECT_LT(length, 0.1 * meanEdge);
     for (int v : loops[l]) loopOf[v] = static_cast<int>(l);
-    for (int v = 0; v < m.vertexCount(); ++v)
-      if (loopOf[v] != static_cast<int>(l))
+    for (int v = 0; v < m.vertexCount(); ++v) {
+      if (loopOf[v] != static_cast<int>(l)) {
         EXPECT_GT((m.positions[v] - m.positions[loops[l][0]]).norm(), 0.5 * meanEdge);
+      }
+    }
   }
   const auto [under30, onHoles] = facesUnder30OnLoops(m, loopOf);
   SurfaceRemeshParams every;

@@ -422,22 +422,25 @@ TEST(SurfaceRelaxation, TinyHolesKeepTheirRingAway) {
     EXPECT_TRUE(polishOnSurface(out, points, input, params));
     EXPECT_EQ(test::recount(out.triangles, out.vertexCount()).boundaryLoops, 2);
     EXPECT_EQ(out.faceCount(), start.faceCount());
-    Relaxed r;
+    Relaxed result;
     for (const Tri& t : out.triangles) {
       const double smallest = test::recountAngles(buildTriMesh(out.positions, {t}).value()).smallestDegrees;
-      r.under30 += smallest < 30;
-      r.slivers += smallest < 30 && std::count_if(t.begin(), t.end(), [](int v) { return v < 3; }) == 2;
+      result.under30 += smallest < 30;
+      result.slivers += smallest < 30 && std::count_if(t.begin(), t.end(), [](int v) { return v < 3; }) == 2;
     }
-    for (int v = 3; v < 9; ++v) r.nearest = std::min(r.nearest, (out.positions[v] - Vec3(0.5, 0.5, 0)).norm());
+    for (int v = 3; v < 9; ++v)
+      result.nearest = std::min(result.nearest, (out.positions[v] - Vec3(0.5, 0.5, 0)).norm());
     for (int v = 0; v < out.vertexCount(); ++v) {
       EXPECT_LT((points[v].position(input) - out.positions[v]).norm(), 1e-12);
-      if (v < 3 || v >= 9) EXPECT_EQ(out.positions[v], start.positions[v]) << "boundary vertex " << v << " moved";
+      if (v < 3 || v >= 9) {
+        EXPECT_EQ(out.positions[v], start.positions[v]) << "boundary vertex " << v << " moved";
+      }
     }
     std::printf(
         "tiny loops under %.2f edges: %d faces under 30 degrees (%d on the hole's edges), free ring %.4f "
         "from the hole\n",
-        tinyLoopLength, r.under30, r.slivers, r.nearest);
-    return r;
+        tinyLoopLength, result.under30, result.slivers, result.nearest);
+    return result;
   };
   const Relaxed every = relaxWith(0.0), kept = relaxWith(RelaxationParams{}.tinyLoopLength);
   EXPECT_GT(every.under30, 3);  // every angle counted: the ring drawn in

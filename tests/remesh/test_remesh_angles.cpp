@@ -79,13 +79,14 @@ TEST_P(RemeshAnglesAgainstCgal, SmallestAngleAndShareUnder30AtLeastAsGood) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgal,
-                         ::testing::Values("bear.off", "bear_bis.off", "blob.off", "blobby.off", "blobby_3cc.off",
-                                           "ChineseDragon-10kv.off", "cube-meshed.off", "dragknob.off",
-                                           "ellipe0.003.off", "ellipsoid.off", "fandisk.off", "fandisk_large.off",
-                                           "femur.off", "hand.off", "holes.off", "homer.off", "knot1.off", "knot2.off",
-                                           "larger_sphere.off", "patch-20.off", "mannequin-devil.off",
-                                           "mesh_with_border.off", "oblong.off", "part.off", "patch-13.off", "pig.off",
-                                           "retinal.off", "sphere.ply", "sphere966.off", "three_peaks.off"),
+                         ::testing::Values("ALSTOM_TEST4.off", "bear.off", "bear_bis.off", "blob.off", "blobby.off",
+                                           "blobby_3cc.off", "ChineseDragon-10kv.off", "cube-meshed.off",
+                                           "dragknob.off", "ellipe0.003.off", "ellipsoid.off", "fandisk.off",
+                                           "fandisk_large.off", "femur.off", "hand.off", "holes.off", "homer.off",
+                                           "knot1.off", "knot2.off", "larger_sphere.off", "patch-20.off",
+                                           "mannequin-devil.off", "mesh_with_border.off", "oblong.off", "part.off",
+                                           "patch-13.off", "pig.off", "retinal.off", "sphere.ply", "sphere966.off",
+                                           "three_peaks.off"),
                          [](const ::testing::TestParamInfo<std::string>& p) { return test::testNameOfFile(p.param); });
 
 // The same comparison at 5% and 30%, on the meshes the polish's flips (to fewer faces under 30
@@ -201,12 +202,17 @@ void printFigures(const std::string& what, const Figures& f) {
               100 * f.after.shareBelow30, 100 * f.distanceBefore, 100 * f.distanceAfter);
 }
 
-/// b's second output has the input's topology (recounted) and, as the input, no crossing faces (CGAL).
-void expectValidWithoutCrossings(const BeforeAndAfter& b) {
+/// b's second output has the input's topology (recounted) and no more pairs of crossing faces
+/// (CGAL) than the input or the first output: none where the input has none.
+void expectValidWithoutNewCrossings(const BeforeAndAfter& b) {
   test::expectValidWithTopologyOf(test::recount(b.after->mesh.triangles, b.after->mesh.vertexCount()),
                                   test::recount(b.input.triangles, b.input.vertexCount()));
-  ASSERT_TRUE(oracle::selfIntersections(b.input).value().empty());
-  EXPECT_TRUE(oracle::selfIntersections(b.after->mesh).value().empty());
+  const size_t input = oracle::selfIntersections(b.input).value().size();
+  const size_t before = oracle::selfIntersections(b.before->mesh).value().size();
+  const size_t after = oracle::selfIntersections(b.after->mesh).value().size();
+  std::printf("crossing pairs: input %zu, outputs %zu -> %zu\n", input, before, after);
+  EXPECT_LE(after, input);
+  EXPECT_LE(after, before);
 }
 
 /// The first start of a small output alone: no other starts, every crease held
@@ -324,7 +330,7 @@ TEST(RemeshAngles, ShortCreasesOfAScanDoNotHoldVertices) {
   EXPECT_LE(d1, d0);
   const int asked = b.input.vertexCount() / 10;
   EXPECT_LE(b.after->mesh.vertexCount(), 1.1 * asked);
-  expectValidWithoutCrossings(b);
+  expectValidWithoutNewCrossings(b);
 }
 
 /// `name` at `percent` remeshed without splits (splitRounds 0) and with them: vertices split in
@@ -352,7 +358,7 @@ void expectSplitsMendTheAngles(const std::string& name, int percent, double gain
   EXPECT_GT(c.smallestDegrees, a.smallestDegrees + gain);
   EXPECT_LT(c.shareBelow30, a.shareBelow30);
   EXPECT_LE(d1, d0);
-  expectValidWithoutCrossings(b);
+  expectValidWithoutNewCrossings(b);
 }
 
 // The splits of faces under 30 degrees held by a wide angle (SurfaceRemeshParams::splitRounds) on
@@ -434,7 +440,7 @@ TEST(RemeshAngles, LastPolishesRaiseTheSmallestAngleNotTheDistance) {
   EXPECT_GT(f.after.smallestDegrees, f.before.smallestDegrees + 2.0);
   EXPECT_LE(f.after.shareBelow30, f.before.shareBelow30);
   EXPECT_LE(f.distanceAfter, f.distanceBefore);
-  expectValidWithoutCrossings(b);
+  expectValidWithoutNewCrossings(b);
 }
 
 // The last polishes are refused where they take the output farther from the input: dino at 10%
@@ -476,27 +482,38 @@ TEST(RemeshAngles, LastPolishesFartherFromTheInputAreRefused) {
   EXPECT_EQ(b.after->mesh.triangles, b.before->mesh.triangles);
 }
 
+/// `name` at `percent` without and with the thin ears cut (SurfaceRemeshParams::cutThinEars): at
+/// least one cut, the smallest angle up by more than `gain` degrees, fewer faces under 30, the
+/// oracle's two-sided Hausdorff no larger, the topology recounted, no crossing faces by CGAL.
+void expectThinEarsCut(const std::string& name, int percent, double gain) {
+  const BeforeAndAfter b = remeshBeforeAndAfter(name, percent, [](SurfaceRemeshParams& p) { p.cutThinEars = false; });
+  ASSERT_TRUE(b.before) << b.before.status().message;
+  ASSERT_TRUE(b.after) << b.after.status().message;
+  const Figures f = figuresOf(b);
+  printFigures(name + " at " + std::to_string(percent) + "% (" + std::to_string(b.after->thinEars) + " thin ears cut)",
+               f);
+  EXPECT_EQ(b.before->thinEars, 0);
+  EXPECT_GE(b.after->thinEars, 1);
+  EXPECT_EQ(b.after->mesh.vertexCount(), b.before->mesh.vertexCount() - b.after->thinEars);
+  EXPECT_EQ(b.after->removedEars, b.before->removedEars + b.after->thinEars);
+  EXPECT_GT(f.after.smallestDegrees, f.before.smallestDegrees + gain);
+  EXPECT_LT(f.after.shareBelow30, f.before.shareBelow30);
+  EXPECT_LE(f.distanceAfter, f.distanceBefore);
+  expectValidWithoutNewCrossings(b);
+}
+
 // Thin ears cut last (SurfaceRemeshParams::cutThinEars): lion at 10% kept its input's own ear
 // (a triangle of 8 degrees at a corner of its boundary) as an output ear of 10.5 degrees, the
 // output's smallest angle. Cut, the smallest angle is the next one's (20.2; CGAL at our count
 // 17.8), one face fewer under 30 degrees, one vertex fewer, the two-sided distance to the input
 // by the oracle no larger (its largest is elsewhere); the input's topology recounted, no
 // crossing faces (CGAL).
-TEST(RemeshAngles, ThinEarsAreCutWhereTheDistanceDoesNotGrow) {
-  const BeforeAndAfter b = remeshBeforeAndAfter("lion.off", 10, [](SurfaceRemeshParams& p) { p.cutThinEars = false; });
-  ASSERT_TRUE(b.before) << b.before.status().message;
-  ASSERT_TRUE(b.after) << b.after.status().message;
-  const Figures f = figuresOf(b);
-  printFigures("lion at 10% (" + std::to_string(b.after->thinEars) + " thin ears cut)", f);
-  EXPECT_EQ(b.before->thinEars, 0);
-  EXPECT_GE(b.after->thinEars, 1);
-  EXPECT_EQ(b.after->mesh.vertexCount(), b.before->mesh.vertexCount() - b.after->thinEars);
-  EXPECT_EQ(b.after->removedEars, b.before->removedEars + b.after->thinEars);
-  EXPECT_GT(f.after.smallestDegrees, f.before.smallestDegrees + 5.0);
-  EXPECT_LT(f.after.shareBelow30, f.before.shareBelow30);
-  EXPECT_LE(f.distanceAfter, f.distanceBefore);
-  expectValidWithoutCrossings(b);
-}
+TEST(RemeshAngles, ThinEarsAreCutWhereTheDistanceDoesNotGrow) { expectThinEarsCut("lion.off", 10, 5.0); }
+
+// ALSTOM_TEST4 at 10%: its smallest angle, 6.9 degrees, was an ear 2.15 mean output edges deep,
+// which a bound of one mean edge on the ears' depth held; the distance, which bounds it now, does
+// not grow when it is cut (18.6 degrees; CGAL at our count 11.9).
+TEST(RemeshAngles, DeepThinEarsAreCutWhereTheDistanceDoesNotGrow) { expectThinEarsCut("ALSTOM_TEST4.off", 10, 10.0); }
 
 // A thin ear is kept where its cut takes the output farther from the input: lion at 30% (the same
 // ear of the input, 12.0 degrees in the output). Cut directly (removeEar), the smallest angle

@@ -52,8 +52,7 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
                : std::string()) +
           (r.thinEars > 0 ? ", " + count(r.thinEars) +
                                 " removed with thin ears off the boundary (a triangle with two boundary edges and an "
-                                "angle under 30 deg, its tip within an edge of its base; cut where the distance to the "
-                                "input does not grow)"
+                                "angle under 30 deg; cut where the distance to the input does not grow)"
                           : std::string()) +
           (r.splitVertices > 0 ? ", " + count(r.splitVertices) +
                                      " added by splitting the edge facing a wide angle of triangles under 30 deg (" +

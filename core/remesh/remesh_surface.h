@@ -212,11 +212,11 @@ struct SurfaceRemeshParams {
   /// Last, thin ears cut off the boundary (thinEars in edge_collapse.h: an ear with an angle under
   /// 30 degrees, a spike or one too tall to be flat), each kept only if the distance to the input
   /// (its centroids and midpoints too) does not grow, which bounds how deep it may be; the
-  /// relaxation's outputs only. ALSTOM_TEST4 at 10%: an ear 2.15 mean edges deep, 6.9 -> 18.6
-  /// degrees (CGAL 11.9), the oracle's Hausdorff the same. lion at 10%: its input's own ear of 8 degrees made
-  /// the output's smallest angle, 10.5 -> 20.2 degrees (CGAL at our count 17.8), the oracle's
-  /// two-sided Hausdorff the same; at 30% the cut (12.0 -> 22.7) would take it farther, so it is
-  /// refused. false = ears kept.
+  /// relaxation's outputs only. lion at 10%: its input's own ear of 8 degrees made the output's
+  /// smallest angle, 10.5 -> 20.2 degrees (CGAL at our count 17.8), the oracle's two-sided
+  /// Hausdorff the same; at 30% the cut (12.0 -> 22.7) would take it farther, so it is refused.
+  /// ALSTOM_TEST4 at 10%: an ear 2.15 mean edges deep, 6.9 -> 18.6 degrees (CGAL 11.9), the
+  /// Hausdorff the same. false = ears kept.
   bool cutThinEars = true;
   /// Also measure the output: angle statistics and (measureDistance) the surface distance to the
   /// input both ways (the figures of the filters' log).

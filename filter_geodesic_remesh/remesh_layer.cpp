@@ -128,6 +128,9 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
                                   (r.lastPolishes == 1 ? std::string("once") : count(r.lastPolishes) + " times") +
                                   " (better angles, no farther from the input)"
                             : std::string()) +
+        (r.jointMoves > 0
+             ? "; " + count(r.jointMoves) + " joint moves of the worst faces' vertices (no farther from the input)"
+             : std::string()) +
         (relaxed.slidingVertices > 0
              ? "; " + count(relaxed.slidingVertices) + " vertices moved only along the input's boundaries and creases"
              : std::string()) +

@@ -879,15 +879,15 @@ double outputDistance(const TriMesh& input, const SurfaceRemeshResult& r) {
 /// The last polishes (SurfaceRemeshParams::lastPolishVertices): r polished again from where it
 /// stands with the relaxation's deviation limit, then with restartDeviation's, each kept only if
 /// its angles are better and neither worse, with no more crossing pairs and no farther from the
-/// input (outputDistance, the input's centroids and midpoints measured too).
+/// input (outputDistance, the input's centroids and midpoints measured too; `distance`: r's if
+/// known, else negative; updated).
 void polishAgain(const TriMesh& input, const Prepared& prepared, const SurfaceRemeshParams& params,
-                 SurfaceRemeshResult& r) {
+                 SurfaceRemeshResult& r, double& distance) {
   if (r.mesh.vertexCount() > params.lastPolishVertices || r.inputKept) return;
   AngleStatistics before = angleStatistics(r.mesh);  // r's, taken once
   if (!(before.minDegrees < SurfaceRemeshParams::kLastPolishBelowDegrees)) return;
   auto clock = std::chrono::steady_clock::now();
   const double relaxation = r.times.relaxation;  // the polishes' own laps are counted in this one's
-  double distance = -1.0;                        // r's, measured when first needed
   for (const double deviation : {params.relaxation.maxDeviation, params.restartDeviation}) {
     if (!(deviation > 0)) continue;
     SurfaceRemeshResult polished = r;
@@ -916,11 +916,11 @@ void polishAgain(const TriMesh& input, const Prepared& prepared, const SurfaceRe
 /// be: no point of the input may end farther from the output than the farthest one already is.
 /// (A bound of one mean output edge besides, the first version's, held ALSTOM_TEST4's ear of
 /// 2.15 edges at 10%: 6.9 degrees, cut 18.6, the distance the same.) A cut takes a face under 30
-/// degrees away and changes no other: no angle falls, nothing new crosses.
-void cutThinEars(const TriMesh& input, const SurfaceRemeshParams& params, SurfaceRemeshResult& r) {
+/// degrees away and changes no other: no angle falls, nothing new crosses. `distance` as
+/// polishAgain's.
+void cutThinEars(const TriMesh& input, const SurfaceRemeshParams& params, SurfaceRemeshResult& r, double& distance) {
   if (!params.cutThinEars || params.relaxation.iterations <= 0 || r.looksLikeTriangleSoup || r.inputKept) return;
   auto clock = std::chrono::steady_clock::now();
-  double distance = -1.0;  // r's, measured when first needed
   for (int tried = 0, cut = 1; cut && tried < kEarRounds;) {
     cut = 0;
     for (const int face : thinEars(r.mesh, std::numeric_limits<double>::infinity())) {
@@ -942,6 +942,33 @@ void cutThinEars(const TriMesh& input, const SurfaceRemeshParams& params, Surfac
     r.crossingPairs = static_cast<int>(selfIntersectingFaces(r.mesh).size());
   if (r.thinEars > 0 && r.crossingPairs == 0 && r.fewestCount > 0)
     r.fewestCount = std::min(r.fewestCount, r.mesh.vertexCount());
+  r.times.relaxation += lap(clock);
+}
+
+/// The joint climbs (climbJointly in surface_relaxation.h) of the final output, up to
+/// SurfaceRemeshParams::jointClimbVertices, kept if the distance to the input (outputDistance;
+/// `distance`, r's if known, else negative, updated) does not grow; the relaxation's outputs only.
+void climbJointlyAtLast(const TriMesh& input, const Prepared& prepared, const SurfaceRemeshParams& params,
+                        SurfaceRemeshResult& r, double& distance) {
+  const RelaxationParams& relaxation = params.relaxation;
+  if (r.mesh.vertexCount() > params.jointClimbVertices || relaxation.iterations <= 0 ||
+      !relaxation.raiseSmallestAngle || relaxation.polishMarginDegrees < 0 || r.looksLikeTriangleSoup || r.inputKept)
+    return;
+  auto clock = std::chrono::steady_clock::now();
+  SurfaceRemeshResult climbed = r;
+  const std::vector<char>& flipped = prepared.oriented.flipped;
+  swapFlipped(climbed.origin, flipped);
+  const Expected<int> moves = climbJointly(climbed.mesh, climbed.origin, prepared.surface(), relaxation);
+  swapFlipped(climbed.origin, flipped);
+  if (moves && *moves > 0) {
+    if (distance < 0) distance = outputDistance(input, r);
+    const double after = outputDistance(input, climbed);
+    if (after <= distance) {
+      distance = after;
+      r = std::move(climbed);
+      r.jointMoves = *moves;
+    }
+  }
   r.times.relaxation += lap(clock);
 }
 
@@ -1097,8 +1124,10 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   if (!r) return r.status();
   if (Status s = restartSmallOutput(input, metric, prepared, p, progress.sub(0.0, remeshShare), *r); !s) return s;
   splitAndPolish(prepared, p, *r);
-  polishAgain(input, prepared, p, *r);
-  cutThinEars(input, p, *r);
+  double distance = -1.0;  // r's distance to the input (outputDistance) once measured, for the last steps' judges
+  polishAgain(input, prepared, p, *r, distance);
+  cutThinEars(input, p, *r, distance);
+  climbJointlyAtLast(input, prepared, p, *r, distance);
   r->times.prepare += prepared.prepareSeconds;  // once for the call, whatever start was kept
   r->times.engine += prepared.engineSeconds;
   auto clock = std::chrono::steady_clock::now();

@@ -218,6 +218,18 @@ struct SurfaceRemeshParams {
   /// ALSTOM_TEST4 at 10%: an ear 2.15 mean edges deep, 6.9 -> 18.6 degrees (CGAL 11.9), the
   /// Hausdorff the same. false = ears kept.
   bool cutThinEars = true;
+  /// Last, joint climbs (climbJointly in surface_relaxation.h) on outputs of up to this many
+  /// vertices: the vertices of the face with the smallest angle moved together, again from each
+  /// new worst face, kept only if the distance to the input (its centroids and midpoints too) does
+  /// not grow; the relaxation's outputs only. The polish moves one vertex at a time and stops where
+  /// two faces hold the smallest angle. Over the data set (manifold meshes up to 20,000 vertices,
+  /// at 5%, 10% and 30%) the smallest angle rises on 45, 40 and 46 outputs and falls on none; the
+  /// oracle's two-sided Hausdorff distance is nowhere larger: lion at 10% 20.2 -> 30.1 degrees,
+  /// double-torus-3-holes at 5% 9.6 -> 20.9, ALSTOM_TEST4 at 30% 22.3 -> 26.3 (docs/BENCHMARKS.md).
+  /// Cost: the climbs and up to two distances (lion at 10%, 759 vertices: 279 -> 326 ms). The bound
+  /// is lastPolishVertices' (bunny00 at 10%, 3,775 vertices: 57 ms of climbs and 300 of distances,
+  /// then refused). 0 = never.
+  int jointClimbVertices = 2000;
   /// Also measure the output: angle statistics and (measureDistance) the surface distance to the
   /// input both ways (the figures of the filters' log).
   bool measure = true;
@@ -306,6 +318,7 @@ struct SurfaceRemeshResult {
   int splitVertices = 0;
   int splitRounds = 0;
   int lastPolishes = 0;  ///< last polishes kept, 0 to 2 (SurfaceRemeshParams::lastPolishVertices)
+  int jointMoves = 0;    ///< joint moves kept, of 2 or 3 vertices each (SurfaceRemeshParams::jointClimbVertices)
   int repairRounds = 0;
   /// Of repairRounds, those that added samples where output triangles crossed each other
   /// (DelaunayParams::maxCrossingRounds).

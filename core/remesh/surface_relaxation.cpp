@@ -615,6 +615,144 @@ class Relaxer {
     return kept;
   }
 
+  /// The polish's joint moves: the worst face's free vertices move together (jointMove), then
+  /// again from the new worst face, until a move fails, kJointTries at most. One vertex at a time,
+  /// the climbs stop where two faces hold the smallest angle and each move of one vertex lowers
+  /// one of them. Returns the moves kept.
+  int jointClimbs(const std::vector<char>& fixed, const std::vector<Freedom>& freedom) {
+    anchor_ = pos_;
+    int kept = 0;
+    for (int tries = 0; tries < kJointTries && jointMove(worstFace(), fixed, freedom); ++tries) ++kept;
+    polishMoves_ += kept;
+    return kept;
+  }
+
+  /// A free vertex's candidate places for a joint move: along its curve both ways, or on the
+  /// input in eight tangent directions, `step` ring lengths away.
+  std::vector<std::pair<Vec3, SurfacePoint>> jointCandidates(int v, Freedom freedom, double step) const {
+    std::vector<std::pair<Vec3, SurfacePoint>> out;
+    const double length = step * meanRingLength(v);
+    CurvePoint at;
+    if (freedom == Freedom::Curve && freedomOf(points_[v], walker_, at) == Freedom::Curve) {
+      for (const double sign : {-1.0, 1.0}) {
+        const CurvePoint to = slide(at, sign * length, walker_);
+        const SurfacePoint q = walker_.onInputEdge(to.a, to.b, to.t);
+        out.push_back({walker_.pointOf(q.face, q.bary), q});
+      }
+      return out;
+    }
+    const int face = walker_.faceOf(points_[v]);
+    const Vec3 normal = tangentNormal(v, face);
+    if (normal.isZero()) return out;
+    const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
+    for (int k = 0; k < 8; ++k) {
+      const SurfacePoint q =
+          walker_.project(pos_[v] + length * (std::cos(k * kPi / 4) * e1 + std::sin(k * kPi / 4) * e2), face);
+      out.push_back({walker_.pointOf(q.face, q.bary), q});
+    }
+    return out;
+  }
+
+  /// One joint move of face f's free vertices (two or three): every combination of their
+  /// candidates (jointCandidates, each vertex staying or moving) at steps of 0.2 ring lengths
+  /// halved down to kJointSmallestStep; the first step with a combination that raises the
+  /// smallest angle of the faces around them by kStepGain, without more faces under 30 degrees,
+  /// a face turned over, a face crossing another or, from 30 degrees up, a vertex's starting
+  /// point or curve farther than maxDeviation from its fan, takes the best. Whether it moved.
+  bool jointMove(int f, const std::vector<char>& fixed, const std::vector<Freedom>& freedom) {
+    std::vector<int> movers;
+    for (const int v : output_.triangles[f])
+      if (!fixed[v] && output_.valence(v) > 0 && freedom[v] != Freedom::None) movers.push_back(v);
+    if (movers.size() < 2) return false;
+    // The faces around the movers (the last one twice when there are two), as they are now.
+    const std::pair<double, int> before = aroundVertices({movers[0], movers[1], movers.back(), movers.back()});
+    const std::vector<int> faces = faces_;
+    std::vector<Vec3> normals;
+    for (const int g : faces) normals.push_back(faceNormal(g));
+    std::vector<std::pair<Vec3, SurfacePoint>> start;
+    std::vector<std::vector<std::pair<Vec3, double>>> curveNear(movers.size());
+    for (size_t i = 0; i < movers.size(); ++i) {
+      start.push_back({pos_[movers[i]], points_[movers[i]]});
+      CurvePoint at;
+      if (freedom[movers[i]] == Freedom::Curve && freedomOf(points_[movers[i]], walker_, at) == Freedom::Curve)
+        curveNear[i] = curveNearby(movers[i], at, meanRingLength(movers[i]));
+    }
+    for (double step = 0.2; step >= kJointSmallestStep; step *= 0.5) {
+      std::vector<std::vector<std::pair<Vec3, SurfacePoint>>> options;
+      for (const int v : movers) {
+        options.push_back(jointCandidates(v, freedom[v], step));
+        options.back().insert(options.back().begin(), {pos_[v], points_[v]});  // staying
+      }
+      // Every combination, scored; the best that passes the checks is kept.
+      std::vector<std::pair<double, std::vector<int>>> scored;
+      std::vector<int> pick(movers.size(), 0);
+      while (true) {
+        size_t i = 0;
+        for (; i < pick.size() && ++pick[i] == static_cast<int>(options[i].size()); ++i) pick[i] = 0;
+        if (i == pick.size()) break;  // back to all staying: done
+        for (size_t k = 0; k < movers.size(); ++k) pos_[movers[k]] = options[k][pick[k]].first;
+        const std::pair<double, int> after = smallestOfFaces(faces);
+        if (after.first > before.first + kStepGain && after.second <= before.second)
+          scored.push_back({after.first, pick});
+      }
+      for (size_t k = 0; k < movers.size(); ++k) pos_[movers[k]] = start[k].first;
+      std::stable_sort(scored.begin(), scored.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+      for (const auto& [smallest, chosen] : scored) {
+        for (size_t k = 0; k < movers.size(); ++k) {
+          pos_[movers[k]] = options[k][chosen[k]].first;
+          points_[movers[k]] = options[k][chosen[k]].second;
+        }
+        if (jointMoveAllowed(movers, faces, normals, start, curveNear, smallest)) {
+          moves_ += static_cast<int>(movers.size());
+          return true;
+        }
+        for (size_t k = 0; k < movers.size(); ++k)
+          pos_[movers[k]] = start[k].first, points_[movers[k]] = start[k].second;
+      }
+    }
+    return false;
+  }
+
+  /// jointMove's checks of the movers where they are now (see there).
+  bool jointMoveAllowed(const std::vector<int>& movers, const std::vector<int>& faces, const std::vector<Vec3>& normals,
+                        const std::vector<std::pair<Vec3, SurfacePoint>>& start,
+                        const std::vector<std::vector<std::pair<Vec3, double>>>& curveNear, double smallest) {
+    for (size_t k = 0; k < faces.size(); ++k) {
+      const Vec3 n = faceNormal(faces[k]);
+      if (!(n.dot(normals[k]) > 0)) return false;
+    }
+    if (smallest >= kSmallAngle)
+      for (size_t k = 0; k < movers.size(); ++k) {
+        const int v = movers[k];
+        const double maxAway = maxDeviation_ * meanRingLength(v);
+        if (fanDistance(v, pos_[v], anchor_[v]) > maxAway || fanDistance(v, pos_[v], start[k].first) > maxAway)
+          return false;
+        for (const auto& [x, now] : curveNear[k])
+          if (fanDistance(v, pos_[v], x) > std::max(now, maxAway)) return false;
+      }
+    faces_ = faces;
+    return !facesCrossAround();
+  }
+
+  /// A face's normal (not unit).
+  Vec3 faceNormal(int f) const {
+    const Tri& t = output_.triangles[f];
+    return (pos_[t[1]] - pos_[t[0]]).cross(pos_[t[2]] - pos_[t[0]]);
+  }
+
+  /// Smallest angle (radians) of `faces` and how many have one under 30 degrees.
+  std::pair<double, int> smallestOfFaces(const std::vector<int>& faces) const {
+    double largestCosine = -1;
+    int under = 0;
+    for (const int f : faces) {
+      const Tri& t = output_.triangles[f];
+      const double c = smallestAngleCosine(pos_[t[0]], pos_[t[1]], pos_[t[2]]);
+      largestCosine = std::max(largestCosine, c);
+      under += c > kCos30;
+    }
+    return {std::acos(largestCosine), under};
+  }
+
   /// The polish's second part's flips with climbs: each face with an angle under 30 degrees has
   /// its edges flipped in turn as flipAndClimb does, and a flip is kept if the faces around the
   /// quad under 30 degrees fall in number, none of them under `floor` (the mesh's smallest: never
@@ -786,15 +924,7 @@ class Relaxer {
       for (const int* c = output_.cornersBegin(v); c != output_.cornersEnd(v); ++c) faces_.push_back(TriMesh::face(*c));
     std::sort(faces_.begin(), faces_.end());
     faces_.erase(std::unique(faces_.begin(), faces_.end()), faces_.end());
-    double largestCosine = -1;
-    int under = 0;
-    for (const int f : faces_) {
-      const Tri& t = output_.triangles[f];
-      const double c = smallestAngleCosine(pos_[t[0]], pos_[t[1]], pos_[t[2]]);
-      largestCosine = std::max(largestCosine, c);
-      under += c > kCos30;
-    }
-    return {std::acos(largestCosine), under};
+    return smallestOfFaces(faces_);
   }
 
   /// Distance from x to the faces of faces_ (aroundVertices').
@@ -1082,9 +1212,11 @@ class Relaxer {
   static constexpr double kGradientStep = 1e-5;             ///< finite differences' step, in ring lengths
   static constexpr double kStationary = 1e-9;               ///< gradients under this: no ascent
   static constexpr int kGoldenSections = 40;
-  static constexpr int kFlipClimbTries = 64;     ///< flipAndClimb's flips kept at most
-  static constexpr int kFlipClimbSweeps = 4;     ///< ... and its sweeps of ascents after each flip
-  static constexpr int kFlipUnder30Tries = 256;  ///< flipAndClimbUnder30's tries at most (each O(F))
+  static constexpr int kFlipClimbTries = 64;           ///< flipAndClimb's flips kept at most
+  static constexpr int kFlipClimbSweeps = 4;           ///< ... and its sweeps of ascents after each flip
+  static constexpr int kFlipUnder30Tries = 256;        ///< flipAndClimbUnder30's tries at most (each O(F))
+  static constexpr int kJointTries = 64;               ///< jointClimbs' moves kept at most (each O(F))
+  static constexpr double kJointSmallestStep = 0.005;  ///< jointMove halves its step down to this, in ring lengths
   /// The polish's valence batches, in turn (valenceFlipsAndClimbs). The first keeps the new faces
   /// near the smallest angle. The two after reach valences the first refuses, by flips with no
   /// bound on the new faces' angles, then by moves toward the rings' means: knot1 at 30% 33.8 ->
@@ -1507,6 +1639,22 @@ Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfaceP
   }
   r.moves = r.polishMoves = relaxer.polishMoves();
   return r;
+}
+
+Expected<int> climbJointly(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
+                           const RelaxationParams& params, const std::vector<char>& pinned) {
+  if (Status s = checkRelaxationInput(output, points, input); !s) return s;
+  if (!pinned.empty() && static_cast<int>(pinned.size()) != output.vertexCount())
+    return invalidInput("joint climbs: one pinned flag per output vertex is needed");
+  const SurfaceWalker walker(input, params.featureAngleDegrees, minCreaseLength(output, params));
+  const std::vector<Freedom> freedom = freedoms(output, points, walker);
+  RelaxationResult counts;
+  std::vector<char> fixed = fixedVertices(freedom, params, counts);
+  for (size_t v = 0; v < pinned.size(); ++v) fixed[v] |= pinned[v];
+  const std::vector<char> noneWatched;
+  Relaxer relaxer(output, points, input, walker, params.maxDeviation, kPi, noneWatched, params.density,
+                  params.tinyLoopLength);
+  return relaxer.jointClimbs(fixed, freedom);
 }
 
 Expected<int> splitWideFaces(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,

@@ -223,7 +223,7 @@ struct SurfaceRemeshParams {
   /// new worst face, kept only if the distance to the input (its centroids and midpoints too) does
   /// not grow; the relaxation's outputs only. The polish moves one vertex at a time and stops where
   /// two faces hold the smallest angle. Over the data set (manifold meshes up to 20,000 vertices,
-  /// at 5%, 10% and 30%) the smallest angle rises on 45, 40 and 46 outputs and falls on none; the
+  /// at 5%, 10% and 30%) the smallest angle rises on 48, 46 and 52 outputs and falls on none; the
   /// oracle's two-sided Hausdorff distance is nowhere larger: lion at 10% 20.2 -> 30.1 degrees,
   /// double-torus-3-holes at 5% 9.6 -> 20.9, ALSTOM_TEST4 at 30% 22.3 -> 26.3 (docs/BENCHMARKS.md).
   /// Cost: the climbs and up to two distances (lion at 10%, 759 vertices: 279 -> 326 ms). The bound

@@ -658,7 +658,8 @@ class Relaxer {
   /// halved down to kJointSmallestStep; the first step with a combination that raises the
   /// smallest angle of the faces around them by kStepGain, without more faces under 30 degrees,
   /// a face turned over, a face crossing another or, from 30 degrees up, a vertex's starting
-  /// point or curve farther than maxDeviation from its fan, takes the best. Whether it moved.
+  /// point farther than maxDeviation from its fan, or its curve's farthest point farther than
+  /// both maxDeviation and before, takes the best. Whether it moved.
   bool jointMove(int f, const std::vector<char>& fixed, const std::vector<Freedom>& freedom) {
     std::vector<int> movers;
     for (const int v : output_.triangles[f])
@@ -727,8 +728,14 @@ class Relaxer {
         const double maxAway = maxDeviation_ * meanRingLength(v);
         if (fanDistance(v, pos_[v], anchor_[v]) > maxAway || fanDistance(v, pos_[v], start[k].first) > maxAway)
           return false;
-        for (const auto& [x, now] : curveNear[k])
-          if (fanDistance(v, pos_[v], x) > std::max(now, maxAway)) return false;
+        // The curve's farthest point from the faces, not each point: two vertices sliding together
+        // move their edge's chord along the curve, nearer some points and farther from others.
+        double was = maxAway, is = 0;
+        for (const auto& [x, now] : curveNear[k]) {
+          was = std::max(was, now);
+          is = std::max(is, fanDistance(v, pos_[v], x));
+        }
+        if (is > was) return false;
       }
     faces_ = faces;
     return !facesCrossAround();

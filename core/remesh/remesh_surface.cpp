@@ -946,7 +946,8 @@ void cutThinEars(const TriMesh& input, const SurfaceRemeshParams& params, Surfac
 }
 
 /// The joint climbs (climbJointly in surface_relaxation.h) of the final output, up to
-/// SurfaceRemeshParams::jointClimbVertices, kept if the distance to the input (outputDistance;
+/// SurfaceRemeshParams::jointClimbVertices and under kLastPolishBelowDegrees, kept if the
+/// distance to the input (outputDistance;
 /// `distance`, r's if known, else negative, updated) does not grow; the relaxation's outputs only.
 void climbJointlyAtLast(const TriMesh& input, const Prepared& prepared, const SurfaceRemeshParams& params,
                         SurfaceRemeshResult& r, double& distance) {
@@ -954,6 +955,8 @@ void climbJointlyAtLast(const TriMesh& input, const Prepared& prepared, const Su
   if (r.mesh.vertexCount() > params.jointClimbVertices || relaxation.iterations <= 0 ||
       !relaxation.raiseSmallestAngle || relaxation.polishMarginDegrees < 0 || r.looksLikeTriangleSoup || r.inputKept)
     return;
+  // As for the last polishes: above it the climbs and the distances cost most and bring least.
+  if (!(angleStatistics(r.mesh).minDegrees < SurfaceRemeshParams::kLastPolishBelowDegrees)) return;
   auto clock = std::chrono::steady_clock::now();
   SurfaceRemeshResult climbed = r;
   const std::vector<char>& flipped = prepared.oriented.flipped;

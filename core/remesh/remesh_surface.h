@@ -219,16 +219,18 @@ struct SurfaceRemeshParams {
   /// Hausdorff the same. false = ears kept.
   bool cutThinEars = true;
   /// Last, joint climbs (climbJointly in surface_relaxation.h) on outputs of up to this many
-  /// vertices: the vertices of the face with the smallest angle moved together, again from each
-  /// new worst face, kept only if the distance to the input (its centroids and midpoints too) does
-  /// not grow; the relaxation's outputs only. The polish moves one vertex at a time and stops where
-  /// two faces hold the smallest angle. Over the data set (manifold meshes up to 20,000 vertices,
-  /// at 5%, 10% and 30%) the smallest angle rises on 48, 46 and 52 outputs and falls on none; the
-  /// oracle's two-sided Hausdorff distance is nowhere larger: lion at 10% 20.2 -> 30.1 degrees,
+  /// vertices whose smallest angle is under kLastPolishBelowDegrees (as the last polishes): the
+  /// vertices of the face with the smallest angle moved together, again from each new worst face,
+  /// kept only if the distance to the input (its centroids and midpoints too) does not grow; the
+  /// relaxation's outputs only. The polish moves one vertex at a time and stops where two faces
+  /// hold the smallest angle. Over the data set (manifold meshes up to 20,000 vertices, at 5%, 10%
+  /// and 30%) the smallest angle rises on 21, 15 and 13 outputs and falls on none; the oracle's
+  /// two-sided Hausdorff distance is nowhere larger: lion at 10% 20.2 -> 30.1 degrees,
   /// double-torus-3-holes at 5% 9.6 -> 20.9, ALSTOM_TEST4 at 30% 22.3 -> 26.3 (docs/BENCHMARKS.md).
-  /// Cost: the climbs and up to two distances (lion at 10%, 759 vertices: 279 -> 326 ms). The bound
-  /// is lastPolishVertices' (bunny00 at 10%, 3,775 vertices: 57 ms of climbs and 300 of distances,
-  /// then refused). 0 = never.
+  /// Cost: the climbs and up to two distances (lion at 10%, 759 vertices: 309 -> 333 ms). Without
+  /// the bounds, the distances cost most where they refuse: bunny00 at 10% (3,775 vertices) 57 ms
+  /// of climbs and 300 of distances, fandisk at 10% (648 vertices at 40.3 degrees) 40 -> 103 ms.
+  /// 0 = never.
   int jointClimbVertices = 2000;
   /// Also measure the output: angle statistics and (measureDistance) the surface distance to the
   /// input both ways (the figures of the filters' log).

@@ -947,8 +947,8 @@ void cutThinEars(const TriMesh& input, const SurfaceRemeshParams& params, Surfac
 
 /// The joint climbs (climbJointly in surface_relaxation.h) of the final output, up to
 /// SurfaceRemeshParams::jointClimbVertices and under kLastPolishBelowDegrees, kept if the
-/// distance to the input (outputDistance;
-/// `distance`, r's if known, else negative, updated) does not grow; the relaxation's outputs only.
+/// distance to the input (outputDistance; `distance` as polishAgain's) does not grow; the
+/// relaxation's outputs only.
 void climbJointlyAtLast(const TriMesh& input, const Prepared& prepared, const SurfaceRemeshParams& params,
                         SurfaceRemeshResult& r, double& distance) {
   const RelaxationParams& relaxation = params.relaxation;

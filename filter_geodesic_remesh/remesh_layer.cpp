@@ -150,12 +150,15 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
   if (r.starts > 1)
     ctx.log("A small output (at most " + std::to_string(SurfaceRemeshParams::kRestartVertices) +
             " vertices): remeshed " + count(r.starts) +
-            " times (other seeds of the sampling, each also relaxed with moves further off the surface); " +
-            (r.keptStart > 0
-                 ? "kept: seed " + std::to_string(r.keptSeed) + ", moves up to " + formatNumber(r.keptDeviation, "%g") +
-                       " of the ring (fewer triangles under 30 deg or a larger smallest angle, no "
-                       "farther from the input)"
-                 : std::string("the first kept (no other better)")));
+            " times (other seeds of the sampling, one from the corners of the input's boundaries and creases, each "
+            "also relaxed with moves further off the surface); " +
+            (r.keptStart > 0 ? "kept: " +
+                                   (r.keptCorners > 0 ? "sampled from the " + count(r.keptCorners) + " corners"
+                                                      : "seed " + std::to_string(r.keptSeed)) +
+                                   ", moves up to " + formatNumber(r.keptDeviation, "%g") +
+                                   " of the ring (fewer triangles under 30 deg or a larger smallest angle, no "
+                                   "farther from the input)"
+                             : std::string("the first kept (no other better)")));
   const Topology& topology = r.mesh.topology;
   ctx.log("Topology kept: " + count(topology.components) + " components, genus " + count(topology.genus) + ", " +
           count(topology.boundaryLoops) + " boundary loops; " +

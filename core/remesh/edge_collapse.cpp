@@ -73,11 +73,13 @@ class FaceGrid {
 /// rewritten in place; `onto` and `faceAlive` say what went.
 class CollapsePass {
  public:
-  CollapsePass(TriMesh& mesh, const std::vector<double>& weight)
+  /// `keep`: empty, or per vertex whether it may not be removed (it may still take a neighbour).
+  CollapsePass(TriMesh& mesh, const std::vector<double>& weight, const std::vector<char>& keep)
       : onto(mesh.vertexCount(), -1),
         faceAlive(mesh.faceCount(), 1),
         m_(mesh),
         weight_(weight),
+        keep_(keep),
         grid_(mesh, 2.0 * std::max(mesh.meanEdgeLength(), 1e-300)),
         touched_(mesh.vertexCount(), 0),
         onBoundary_(mesh.vertexCount(), 0) {}
@@ -177,6 +179,7 @@ class CollapsePass {
     }
     const bool alongBoundary = commonCount == 1 && onBoundary_[u] && onBoundary_[v];
     if (commonCount != (alongBoundary ? 1 : 2) || (onBoundary_[u] && !alongBoundary)) return false;
+    if (!keep_.empty() && keep_[u]) return false;
     if (!keepsTopology(u, v, common, commonCount)) return false;
     std::vector<Tri> before;
     for (int f : moving) before.push_back(m_.triangles[f]);
@@ -200,6 +203,7 @@ class CollapsePass {
 
   TriMesh& m_;
   const std::vector<double>& weight_;
+  const std::vector<char>& keep_;
   FaceGrid grid_;
   std::vector<char> touched_, onBoundary_;
 };
@@ -243,12 +247,18 @@ bool compact(TriMesh& mesh, const std::vector<int>& onto, const std::vector<char
 /// One pass of up to `excess` collapses (of the edges of `faces`, if given) on a copy of `mesh`,
 /// kept only if valid; counted in `r`. False when nothing went.
 bool collapsePass(TriMesh& mesh, std::vector<SurfacePoint>& origin, std::vector<double>& weight, std::vector<int>& cell,
-                  int excess, const std::vector<char>* faces, CollapseResult& r) {
+                  int excess, const std::vector<char>* faces, std::vector<char>& keep, CollapseResult& r) {
   TriMesh work = mesh;  // the pass rewrites triangles in place
-  CollapsePass pass(work, weight);
+  CollapsePass pass(work, weight, keep);
   const int done = pass.run(excess, faces);
   ++r.passes;
   if (done == 0 || !compact(work, pass.onto, pass.faceAlive, origin, weight, cell)) return false;
+  if (!keep.empty()) {  // compacted as the vertices are (no kept vertex went)
+    std::vector<char> kept;
+    for (size_t v = 0; v < keep.size(); ++v)
+      if (pass.onto[v] < 0) kept.push_back(keep[v]);
+    keep = std::move(kept);
+  }
   mesh = std::move(work);
   r.collapsed += done;
   return true;
@@ -257,10 +267,10 @@ bool collapsePass(TriMesh& mesh, std::vector<SurfacePoint>& origin, std::vector<
 }  // namespace
 
 CollapseResult collapseToCount(TriMesh& mesh, std::vector<SurfacePoint>& origin, std::vector<double>& weight,
-                               std::vector<int>& cell, int targetCount) {
+                               std::vector<int>& cell, int targetCount, std::vector<char> keep) {
   CollapseResult r;
   while (mesh.vertexCount() > targetCount)
-    if (!collapsePass(mesh, origin, weight, cell, mesh.vertexCount() - targetCount, nullptr, r)) break;
+    if (!collapsePass(mesh, origin, weight, cell, mesh.vertexCount() - targetCount, nullptr, keep, r)) break;
   return r;
 }
 
@@ -272,7 +282,8 @@ CollapseResult collapseCrossingFaces(TriMesh& mesh, std::vector<SurfacePoint>& o
     if (pairs.empty()) break;
     std::vector<char> crossing(mesh.faceCount(), 0);
     for (const auto& [f, g] : pairs) crossing[f] = crossing[g] = 1;
-    if (!collapsePass(mesh, origin, weight, cell, static_cast<int>(2 * pairs.size()), &crossing, r)) break;
+    std::vector<char> keepNone;
+    if (!collapsePass(mesh, origin, weight, cell, static_cast<int>(2 * pairs.size()), &crossing, keepNone, r)) break;
   }
   return r;
 }

@@ -594,6 +594,27 @@ void collapseCrossings(const TriMesh& input, const TriMesh& surface, const std::
   if (params.relaxation.iterations > 0) relaxCollapsed(surface, flipped, metric, params, r);
 }
 
+/// Per output vertex of `r`, whether it lies at one of the input's vertices `at` (its origin that
+/// vertex, or a corner of a face with all its weight); empty when `at` is.
+std::vector<char> atSamples(const TriMesh& input, const std::vector<int>& at, const SurfaceRemeshResult& r) {
+  if (at.empty()) return {};
+  std::vector<char> is(input.vertexCount(), 0), out(r.origin.size(), 0);
+  for (int v : at) is[v] = 1;
+  for (size_t i = 0; i < r.origin.size(); ++i) {
+    const SurfacePoint& p = r.origin[i];
+    if (p.vertex >= 0) out[i] = is[p.vertex];
+    for (int k = 0; k < 3 && p.face >= 0; ++k)
+      if (p.bary[k] == 1.0) out[i] = is[input.triangles[p.face][k]];
+  }
+  return out;
+}
+
+/// Whether `r` has an output vertex at each of the input's vertices `at` (none when `at` is empty).
+bool holdsEvery(const TriMesh& input, const std::vector<int>& at, const SurfaceRemeshResult& r) {
+  const std::vector<char> is = atSamples(input, at, r);
+  return !at.empty() && static_cast<size_t>(std::count(is.begin(), is.end(), 1)) >= at.size();
+}
+
 /// Issue 20: an output still above the count asked for (by more than countTolerance) after the
 /// count search, as thin parts at low counts give, is brought down to it by edge collapses
 /// (edge_collapse.h), weighted by the metric, then relaxed on the oriented input as the
@@ -604,7 +625,8 @@ void collapseToAsked(const TriMesh& input, const TriMesh& surface, const std::ve
   const int target = params.sampling.targetCount;
   if (target <= 0 || r.mesh.vertexCount() <= (1.0 + params.countTolerance) * target) return;
   std::vector<double> weight = outputWeights(input, metric, r);
-  const CollapseResult collapsed = collapseToCount(r.mesh, r.origin, weight, r.cell, target);
+  const CollapseResult collapsed =
+      collapseToCount(r.mesh, r.origin, weight, r.cell, target, atSamples(input, params.sampling.initialSamples, r));
   r.collapsedVertices = collapsed.collapsed;
   if (collapsed.collapsed == 0) return;
   r.crossingPairs = static_cast<int>(selfIntersectingFaces(r.mesh).size());
@@ -1029,6 +1051,25 @@ std::vector<SurfaceRemeshParams> otherStarts(const SurfaceRemeshParams& p, int n
   return starts;
 }
 
+/// The starts sampled from the corners of the input's feature curves (featureCorners: the
+/// relaxation never moves a vertex there), appended to `starts`: with the relaxation of `held`
+/// and, where it is looser, restartDeviation's. The seeds' samplings may leave corners out, and the
+/// output's boundary then cuts them with chords (patch-23, a 100 x 33 rectangle, at 10%: two of
+/// its four corners). None when there are no corners or not fewer than the samples asked for;
+/// restartSmallOutput passes each over where the output kept so far has a vertex at every corner
+/// (the looser one too, once the first is kept).
+void cornerStarts(const Prepared& prepared, const SurfaceRemeshParams& held, std::vector<SurfaceRemeshParams>& starts) {
+  if (!held.cornerStarts) return;
+  std::vector<int> corners = featureCorners(prepared.surface(), held.relaxation);
+  if (corners.empty() || static_cast<int>(corners.size()) >= held.sampling.targetCount) return;
+  starts.push_back(held);
+  starts.back().sampling.initialSamples = std::move(corners);
+  if (held.restartDeviation > held.relaxation.maxDeviation) {
+    starts.push_back(starts.back());
+    starts.back().relaxation.maxDeviation = held.restartDeviation;
+  }
+}
+
 /// A small output's first start with every crease held (RelaxationParams::minCreaseLength 0),
 /// when short creases are not: it replaces `r` as the first start, and `r` is returned, to be
 /// judged as the last of the others (the other seeds hold every crease too). Nothing if it fails (`r`
@@ -1055,7 +1096,8 @@ Expected<std::optional<SurfaceRemeshResult>> holdEveryCrease(const TriMesh& inpu
 /// and the other seeds hold every crease (holdEveryCrease; the output with short creases free is
 /// then the last of the others), and `r` is replaced by the best of the others where one is
 /// better and no worse in any figure than the first, its distance to the input included; a start
-/// with the looser relaxation must also be no farther from the input than the output kept so far.
+/// with the looser relaxation or from the corners (cornerStarts) must also be no farther from the
+/// input than the output kept so far.
 /// A start that fails is passed over; fails only when cancelled. times.restarts is the wall time
 /// of the starts other than the one kept.
 Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& prepared, const SurfaceRemeshParams& p,
@@ -1076,28 +1118,37 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
   SurfaceRemeshParams held = p;  // the other seeds hold every crease as the first does
   if (*freeCreases) held.relaxation.minCreaseLength = 0;
   std::vector<SurfaceRemeshParams> starts = otherStarts(held, r.mesh.vertexCount());
+  cornerStarts(prepared, held, starts);
   if (*freeCreases) starts.push_back(p);  // judged last: r's own start, short creases free
   // A swap made the held start's stages the first's, and the free one's among the others.
   double others = *freeCreases ? (*freeCreases)->times.remesh() - r.times.remesh() : 0.0;
+  int passedOver = 0;  // starts from the corners not run
   for (size_t k = 0; k < starts.size(); ++k) {
     const SurfaceRemeshParams& start = starts[k];
-    if (!progress.report(1.0, "Other starts")) return cancelled();  // at the remesh's end: a check only
+    if (!progress.report(1.0, "Other starts")) return cancelled();             // at the remesh's end: a check only
+    if (holdsEvery(input, start.sampling.initialSamples, kept ? *kept : r)) {  // no corner to win back
+      ++passedOver;
+      continue;
+    }
     Expected<SurfaceRemeshResult> other = *freeCreases && k + 1 == starts.size()
                                               ? Expected<SurfaceRemeshResult>(std::move(**freeCreases))
                                               : remeshWhole(input, metric, prepared, start, 1.0, Progress{});
     if (!other) continue;
     const AngleStatistics a = angleStatistics(other->mesh);
-    const bool looser = start.relaxation.maxDeviation > p.relaxation.maxDeviation;
+    // A looser relaxation's start, or one from the corners, no farther than the output kept so far.
+    const bool nearer =
+        start.relaxation.maxDeviation > p.relaxation.maxDeviation || !start.sampling.initialSamples.empty();
     if (!betterAngles(a, best) || other->mesh.vertexCount() != r.mesh.vertexCount() ||
         other->crossingPairs > r.crossingPairs || worseAngles(a, first))
       continue;
     const double d = outputDistance(input, *other);
-    if (d > (looser ? keptDistance : firstDistance)) continue;
+    if (d > (nearer ? keptDistance : firstDistance)) continue;
     best = a;
     keptDistance = d;
     kept = std::move(*other);
-    kept->keptStart = static_cast<int>(k) + 1;
+    kept->keptStart = static_cast<int>(k) + 1 - passedOver;
     kept->keptSeed = start.sampling.seed;
+    kept->keptCorners = static_cast<int>(start.sampling.initialSamples.size());
     kept->keptDeviation = start.relaxation.maxDeviation;
     kept->keptCreasesHeld = !(start.relaxation.minCreaseLength > 0);
   }
@@ -1106,7 +1157,7 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
     others += r.times.remesh() - kept->times.remesh();
     r = std::move(*kept);
   }
-  r.starts = 1 + static_cast<int>(starts.size());
+  r.starts = 1 + static_cast<int>(starts.size()) - passedOver;
   r.times.restarts = std::max(0.0, others);
   return {};
 }

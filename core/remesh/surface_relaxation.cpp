@@ -1709,4 +1709,15 @@ Expected<int> splitWideFaces(TriMesh& output, std::vector<SurfacePoint>& points,
   return splits;
 }
 
+std::vector<int> featureCorners(const TriMesh& input, const RelaxationParams& params) {
+  const SurfaceWalker walker(input, params.featureAngleDegrees, 0.0);
+  std::vector<int> corners;
+  for (int v = 0; v < input.vertexCount(); ++v) {
+    std::array<int, 3> next{};
+    const int n = input.valence(v) > 0 ? walker.blockedNeighbours(v, next) : 0;
+    if (n > 0 && (n != 2 || walker.curveNext(v, next[0]) < 0)) corners.push_back(v);
+  }
+  return corners;
+}
+
 }  // namespace gr

@@ -208,6 +208,15 @@ Expected<RelaxationResult> polishOnSurface(TriMesh& output, std::vector<SurfaceP
 Expected<int> climbJointly(TriMesh& output, std::vector<SurfacePoint>& points, const TriMesh& input,
                            const RelaxationParams& params = {}, const std::vector<char>& pinned = {});
 
+/// The corners of the input's feature curves as the relaxation sees them (boundaries, and creases
+/// sharper than params.featureAngleDegrees, every crease held): the input vertices on a feature
+/// edge where not exactly two of them meet (one ends, or three or more meet) or where the curve
+/// turns by more than the feature angle (the four corners of a rectangle). No output vertex there
+/// ever moves, so a sampling that leaves one out cuts it off with a chord for good; the small
+/// outputs' starts include one sampled from them (SurfaceRemeshParams::restarts). In vertex order.
+/// Cost: O(F) (every vertex's corners once).
+std::vector<int> featureCorners(const TriMesh& input, const RelaxationParams& params = {});
+
 /// A face under 30 degrees whose widest angle is at least this (degrees) is one that moves and
 /// flips could not mend: a corner of the input's feature curves or a vertex on a boundary holds its
 /// wide angle (mech-holes-shark at 5%: 5.2 degrees at a hole's rim). Splitting the edge facing the

@@ -681,6 +681,19 @@ TEST_F(FilterInProcess, UniformRemeshOfASmallOutputLogsItsStarts) {
   EXPECT_NE(logText().find("the other starts"), std::string::npos) << logText();
 }
 
+// A start from the corners of the input's feature curves (SurfaceRemeshParams::cornerStarts) is
+// logged when kept: patch-23 at 10%, a rectangle, keeps its 4 corners (as the core run on the
+// filter's input says).
+TEST_F(FilterInProcess, UniformRemeshLogsAStartFromTheCorners) {
+  const std::optional<SurfaceRemeshResult> r = uniformAndItsCore("patch-23.off", 10);
+  ASSERT_TRUE(r) << logText();
+  ASSERT_EQ(r->keptCorners, 4);
+  EXPECT_EQ(doc.mm()->cm.VN(), r->mesh.vertexCount());
+  char kept[96];
+  std::snprintf(kept, sizeof kept, "kept: sampled from the 4 corners, moves up to %g of the ring", r->keptDeviation);
+  EXPECT_NE(logText().find(kept), std::string::npos) << kept << " in " << logText();
+}
+
 // The last polishes (SurfaceRemeshParams::lastPolishVertices) are logged: holes at 5%, whose
 // output is polished again once, as the core run on the filter's input says. (Through MeshLab's
 // float coordinates the outputs differ from the core's on the file's doubles: mannequin-devil at

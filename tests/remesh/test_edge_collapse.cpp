@@ -82,6 +82,38 @@ TEST(EdgeCollapse, ToAThirdKeepsTopologyAndCrossesNothing) {
   }
 }
 
+// Vertices flagged to stay (collapseToCount's `keep`: the remesh's samples from the corners of the
+// input's feature curves) are all still there, at their positions, when a grid is brought to a
+// third of its vertices: its four corners and every seventh vertex; the rest as above.
+TEST(EdgeCollapse, KeptVerticesStay) {
+  const TriMesh grid = test::planeGrid(12);
+  TriMesh m = grid;
+  std::vector<SurfacePoint> origin(m.vertexCount());
+  std::vector<int> cell(m.vertexCount());
+  std::vector<char> keep(m.vertexCount(), 0);
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    origin[v] = SurfacePoint::atVertex(v);
+    cell[v] = v;
+    const Vec3& p = grid.positions[v];
+    keep[v] = v % 7 == 0 || ((p.x() == 0.0 || p.x() == 1.0) && (p.y() == 0.0 || p.y() == 1.0));
+  }
+  std::vector<double> weight(m.vertexCount(), 1.0);
+  const int target = m.vertexCount() / 3;
+  collapseToCount(m, origin, weight, cell, target, keep);
+  EXPECT_EQ(m.vertexCount(), target);
+  expectSameTopology(test::recount(m.triangles, m.vertexCount()), test::recount(grid.triangles, grid.vertexCount()));
+  std::vector<char> there(grid.vertexCount(), 0);
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    ASSERT_EQ(m.positions[v], grid.positions[origin[v].vertex]) << v;
+    there[origin[v].vertex] = 1;
+  }
+  for (int v = 0; v < grid.vertexCount(); ++v) {
+    if (keep[v]) {
+      EXPECT_TRUE(there[v]) << "kept vertex " << v << " went";
+    }
+  }
+}
+
 /// remeshSurface (uniform preset, or the adaptive one under the total curvature's metric) at a
 /// fraction of the mesh's vertices.
 void expectTheCountAskedFor(const std::string& name, double fraction, bool adaptive) {

@@ -108,7 +108,8 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgal,
 // mannequin-devil at 5%, anchor_dense at 30%; and the thin ears cut (SurfaceRemeshParams::cutThinEars):
 // lion at 10%; and the tiny holes' rings left where they are (the relaxation's tiny loops,
 // surface_relaxation.h): ChineseDragon-10kv at 5% and 30% (and at 10%, above); and the joint
-// climbs (SurfaceRemeshParams::jointClimbVertices): patch-13 at 5%.
+// climbs (SurfaceRemeshParams::jointClimbVertices): patch-13 at 5%; and the starts from the
+// corners (SurfaceRemeshParams::cornerStarts): patch-23 at 5% and 10%.
 class RemeshAnglesAgainstCgalAtOtherCounts : public ::testing::TestWithParam<std::pair<std::string, int>> {};
 
 TEST_P(RemeshAnglesAgainstCgalAtOtherCounts, SmallestAngleAndShareUnder30AtLeastAsGood) {
@@ -135,7 +136,8 @@ INSTANTIATE_TEST_SUITE_P(
         std::pair<std::string, int>{"cylinder_locally_refined.off", 30},
         std::pair<std::string, int>{"mannequin-devil.off", 5}, std::pair<std::string, int>{"anchor_dense.off", 30},
         std::pair<std::string, int>{"lion.off", 10}, std::pair<std::string, int>{"ChineseDragon-10kv.off", 5},
-        std::pair<std::string, int>{"ChineseDragon-10kv.off", 30}, std::pair<std::string, int>{"patch-13.off", 5}),
+        std::pair<std::string, int>{"ChineseDragon-10kv.off", 30}, std::pair<std::string, int>{"patch-13.off", 5},
+        std::pair<std::string, int>{"patch-23.off", 5}, std::pair<std::string, int>{"patch-23.off", 10}),
     [](const ::testing::TestParamInfo<std::pair<std::string, int>>& p) {
       return test::testNameOfFile(p.param.first) + "_" + std::to_string(p.param.second);
     });
@@ -225,6 +227,10 @@ void onlyTheFirstStart(SurfaceRemeshParams& p) {
   p.relaxation.minCreaseLength = 0;
 }
 
+/// The seeds' starts alone (SurfaceRemeshParams::cornerStarts off): the figures of the tests that
+/// measure them (patch-20 and blob at 10% keep a start from their corners, better still, with them).
+void withoutCornerStarts(SurfaceRemeshParams& p) { p.cornerStarts = false; }
+
 // The starts are judged by their distance to the input at its faces' centroids and side midpoints
 // too (outputDistance). spool at 10% (64 vertices): judged at the input's vertices alone, a start
 // with a larger smallest angle (39.4 against 36.8 degrees) was kept though the oracle finds it
@@ -253,7 +259,7 @@ TEST(RemeshAngles, OtherStartsAreJudgedAtTheInputsFacesToo) {
 // The other starts of a small output (SurfaceRemeshParams::restarts): patch-20 at 10% (35
 // vertices) remeshed with them and without; another start is kept, better (33.9 -> 41.4 degrees).
 TEST(RemeshAngles, OtherStartsOfASmallOutputKeepOnlyABetterOne) {
-  const BeforeAndAfter b = remeshBeforeAndAfter("patch-20.off", 10, onlyTheFirstStart);
+  const BeforeAndAfter b = remeshBeforeAndAfter("patch-20.off", 10, onlyTheFirstStart, withoutCornerStarts);
   ASSERT_TRUE(b.before) << b.before.status().message;
   ASSERT_TRUE(b.after) << b.after.status().message;
   EXPECT_EQ(b.before->starts, 1);
@@ -264,6 +270,37 @@ TEST(RemeshAngles, OtherStartsOfASmallOutputKeepOnlyABetterOne) {
          "looser";
   EXPECT_GT(b.after->keptStart, 0) << "on this mesh another start is better";
   expectBetterStartKept("patch-20 at 10%", b.input, *b.before, *b.after);
+}
+
+// The starts from the corners of the input's feature curves (SurfaceRemeshParams::cornerStarts):
+// patch-23, a 100 x 33 rectangle of 109 vertices, at 5% and 10% (5 and 10 vertices), and patch-13 at
+// 10%, remeshed with them and without. Without, the seeds' samplings leave corners out and the
+// output's boundary cuts them (patch-23 at 5%: 26.0 degrees, 66.7% under 30, two-sided Hausdorff
+// 17.5% of the diagonal); with them, the start from the corners is kept, better and nearer, and
+// has an output vertex at each of the rectangle's four corners (found here from the coordinates).
+TEST(RemeshAngles, StartsFromTheCornersKeepThem) {
+  for (const auto& [name, percent] :
+       {std::pair<const char*, int>{"patch-23.off", 5}, {"patch-23.off", 10}, {"patch-13.off", 10}}) {
+    const std::string what = std::string(name) + " at " + std::to_string(percent) + "%";
+    SCOPED_TRACE(what);
+    const BeforeAndAfter b = remeshBeforeAndAfter(name, percent, withoutCornerStarts);
+    ASSERT_TRUE(b.before) << b.before.status().message;
+    ASSERT_TRUE(b.after) << b.after.status().message;
+    const bool looser = b.after->keptDeviation > SurfaceRemeshParams{}.relaxation.maxDeviation;
+    EXPECT_EQ(b.after->starts, b.before->starts + (looser ? 2 : 1))
+        << "from the corners, the looser relaxation's passed over once the other's has them all";
+    EXPECT_EQ(b.before->keptCorners, 0);
+    EXPECT_GT(b.after->keptCorners, 0) << "the start from the corners is better here";
+    expectBetterStartKept(what, b.input, *b.before, *b.after);
+    if (std::string(name) != "patch-23.off") continue;
+    EXPECT_EQ(b.after->keptCorners, 4);
+    Vec3 lo = b.input.positions[0], hi = lo;
+    for (const Vec3& p : b.input.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    int corners = 0;  // the rectangle spans x and z; y is its plane (within 0.15 of a 100-long side)
+    for (const Vec3& p : b.after->mesh.positions)
+      corners += (p.x() == lo.x() || p.x() == hi.x()) && (p.z() == lo.z() || p.z() == hi.z());
+    EXPECT_EQ(corners, 4);
+  }
 }
 
 // More starts for the smallest outputs (SurfaceRemeshParams::restartsFor): the rule, then blob at
@@ -279,7 +316,7 @@ TEST(RemeshAngles, SmallestOutputsGetMoreStarts) {
   none.restarts = 0;
   EXPECT_EQ(none.restartsFor(4), 0);
 
-  const BeforeAndAfter b = remeshBeforeAndAfter("blob.off", 10, onlyTheFirstStart);
+  const BeforeAndAfter b = remeshBeforeAndAfter("blob.off", 10, onlyTheFirstStart, withoutCornerStarts);
   ASSERT_TRUE(b.before) << b.before.status().message;
   ASSERT_TRUE(b.after) << b.after.status().message;
   const int n = b.before->mesh.vertexCount();

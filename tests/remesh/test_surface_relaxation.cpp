@@ -225,6 +225,31 @@ TEST(SurfaceRelaxation, CreaseVerticesStayOnTheirCreasesAndCornersDoNotMove) {
   EXPECT_GE(smallestAngle(out), 25.0);
 }
 
+// The corners of the feature curves (featureCorners), against positions read here: a square
+// grid's are its four corners, a cube's its eight (three creases of 90 degrees meet there), none
+// on a sphere or an open cylinder (its rims turn by 22.5 degrees a vertex), and none on the cube
+// once its creases are under the feature angle.
+TEST(SurfaceRelaxation, FeatureCornersAreWhereTheCurvesMeetOrTurn) {
+  const TriMesh grid = test::planeGrid(8);
+  std::vector<int> corners = featureCorners(grid);
+  ASSERT_EQ(corners.size(), 4u);
+  for (const int v : corners) {
+    const Vec3& p = grid.positions[v];
+    EXPECT_TRUE((p.x() == 0.0 || p.x() == 1.0) && (p.y() == 0.0 || p.y() == 1.0)) << p.transpose();
+  }
+  EXPECT_EQ(featureCorners(test::unitCube()).size(), 8u);
+  EXPECT_TRUE(featureCorners(test::icosphere(2)).empty());
+  EXPECT_TRUE(featureCorners(test::cylinder(16, 4)).empty());
+  RelaxationParams blunt;
+  blunt.featureAngleDegrees = 100.0;
+  EXPECT_TRUE(featureCorners(test::unitCube(), blunt).empty());
+  // A side of the square turned by more than the feature angle at its midpoint is a corner too.
+  TriMesh bent = test::planeGrid(8);
+  for (Vec3& p : bent.positions) p.z() = p.x() > 0.5 ? 2.0 * (p.x() - 0.5) : 0.0;  // a fold of 63.4 degrees
+  corners = featureCorners(bent);
+  EXPECT_EQ(corners.size(), 6u);  // the square's four, and the fold's two ends on the boundary
+}
+
 // At the defaults, crease chains shorter than the output's mean edge length are not creases
 // (RelaxationParams::minCreaseLength): on fandisk at 10% the vertices on chains at least that long
 // slide along them as above, and only vertices on shorter chains (chain lengths walked here from

@@ -149,9 +149,9 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
             (r.angleRescued ? std::string("that output, better, kept") : std::string("not better, the first kept")));
   if (r.starts > 1)
     ctx.log("A small output (at most " + std::to_string(SurfaceRemeshParams::kRestartVertices) +
-            " vertices): remeshed " + count(r.starts) +
-            " times (other seeds of the sampling, one from the corners of the input's boundaries and creases, each "
-            "also relaxed with moves further off the surface); " +
+            " vertices): remeshed " + count(r.starts) + " times (other seeds of the sampling" +
+            (r.cornerStarts > 0 ? std::string(", from the corners of the input's boundaries and creases") : "") +
+            ", each also relaxed with moves further off the surface); " +
             (r.keptStart > 0 ? "kept: " +
                                    (r.keptCorners > 0 ? "sampled from the " + count(r.keptCorners) + " corners"
                                                       : "seed " + std::to_string(r.keptSeed)) +

@@ -1158,6 +1158,10 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
     r = std::move(*kept);
   }
   r.starts = 1 + static_cast<int>(starts.size()) - passedOver;
+  r.cornerStarts =
+      static_cast<int>(std::count_if(starts.begin(), starts.end(),
+                                     [](const SurfaceRemeshParams& s) { return !s.sampling.initialSamples.empty(); })) -
+      passedOver;
   r.times.restarts = std::max(0.0, others);
   return {};
 }

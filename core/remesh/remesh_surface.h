@@ -307,6 +307,7 @@ struct SurfaceRemeshResult {
   bool inputKept = false;
   int remeshedCount = 0;
   int starts = 1;         ///< samplings started, whole remeshes (SurfaceRemeshParams::restarts)
+  int cornerStarts = 0;   ///< of them, from the corners of the input's feature curves (cornerStarts)
   int keptStart = 0;      ///< the one kept: 0 the first, else its place among the others (1 to starts - 1)
   unsigned keptSeed = 0;  ///< its sampling's seed
   /// Its sampling started from the corners of the input's feature curves (featureCorners in

@@ -679,6 +679,8 @@ TEST_F(FilterInProcess, UniformRemeshOfASmallOutputLogsItsStarts) {
   std::snprintf(kept, sizeof kept, "kept: seed %u, moves up to %g of the ring", r->keptSeed, r->keptDeviation);
   EXPECT_NE(logText().find(kept), std::string::npos) << kept << " in " << logText();
   EXPECT_NE(logText().find("the other starts"), std::string::npos) << logText();
+  EXPECT_EQ(r->cornerStarts, 0) << "a sphere has no corners";
+  EXPECT_EQ(logText().find("from the corners"), std::string::npos) << logText();
 }
 
 // A start from the corners of the input's feature curves (SurfaceRemeshParams::cornerStarts) is
@@ -692,6 +694,7 @@ TEST_F(FilterInProcess, UniformRemeshLogsAStartFromTheCorners) {
   char kept[96];
   std::snprintf(kept, sizeof kept, "kept: sampled from the 4 corners, moves up to %g of the ring", r->keptDeviation);
   EXPECT_NE(logText().find(kept), std::string::npos) << kept << " in " << logText();
+  EXPECT_NE(logText().find("from the corners of the input's boundaries and creases"), std::string::npos) << logText();
 }
 
 // The last polishes (SurfaceRemeshParams::lastPolishVertices) are logged: holes at 5%, whose

@@ -289,6 +289,8 @@ TEST(RemeshAngles, StartsFromTheCornersKeepThem) {
     const bool looser = b.after->keptDeviation > SurfaceRemeshParams{}.relaxation.maxDeviation;
     EXPECT_EQ(b.after->starts, b.before->starts + (looser ? 2 : 1))
         << "from the corners, the looser relaxation's passed over once the other's has them all";
+    EXPECT_EQ(b.after->cornerStarts, looser ? 2 : 1);
+    EXPECT_EQ(b.before->cornerStarts, 0);
     EXPECT_EQ(b.before->keptCorners, 0);
     EXPECT_GT(b.after->keptCorners, 0) << "the start from the corners is better here";
     expectBetterStartKept(what, b.input, *b.before, *b.after);

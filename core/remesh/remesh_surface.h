@@ -157,9 +157,9 @@ struct SurfaceRemeshParams {
   /// the seeds alone gave (rotor.off at 10%: 6.6 -> 9.2%). 0 = off.
   double restartDeviation = RelaxationParams::kRegularMaxDeviation;
   /// One more start of a small output (then with restartDeviation's relaxation, unless the first
-  /// is kept: it has every corner), judged by the same rule and,
-  /// as the looser ones, no farther from the input than the output kept before it: its sampling
-  /// starts from the corners of the input's feature curves (featureCorners in
+  /// is kept: it has every corner), judged by the same rule and, as the looser ones, no farther
+  /// from the input than the output kept before it: its sampling starts from the corners of the
+  /// input's feature curves (featureCorners in
   /// surface_relaxation.h: where boundaries and creases meet, end or turn by more than the feature
   /// angle), when there are fewer of them than the samples asked for, and the edge collapses to the
   /// count keep them; tried only where the output kept so far lacks a corner. The relaxation never
@@ -173,8 +173,7 @@ struct SurfaceRemeshParams {
   /// 43.6 -> 47.6) and the oracle's two-sided Hausdorff distance falls on all 10 (patch-13 at 5%
   /// 11.0 -> 1.0% of the diagonal); on oblong at 10% (28 corners, 42 vertices) the smallest angle
   /// falls 34.6 -> 34.0 degrees (CGAL 4.7; Hausdorff 16.9 -> 15.1%): the later stages end lower
-  /// from the start kept.
-  /// false = off.
+  /// from the start kept. false = off.
   bool cornerStarts = true;
   static constexpr int kRestartVertices = 64;
   static constexpr int kRestartInputVertices = 2500;

@@ -11,6 +11,7 @@
 #include <string>
 #include <utility>
 
+#include "core/base/math.h"
 #include "core/geodesic/fast_marching.h"
 #include "core/geodesic/geodesic_lloyd.h"
 #include "core/geodesic/geodesic_surface.h"
@@ -997,6 +998,53 @@ void climbJointlyAtLast(const TriMesh& input, const Prepared& prepared, const Su
   r.times.relaxation += lap(clock);
 }
 
+/// Whether a face with the smallest angle of `mesh` (`smallestDegrees`) is a thin ear
+/// (thinEars): only then can a cut raise that angle.
+bool smallestIsAThinEar(const TriMesh& mesh, double smallestDegrees) {
+  const std::vector<int> ears = thinEars(mesh, std::numeric_limits<double>::infinity());
+  if (ears.empty()) return false;
+  const Tri& t = mesh.triangles[ears.front()];  // the thinnest
+  const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+  const double degrees = std::min({angleAt(a, b, c), angleAt(b, c, a), angleAt(c, a, b)}) * 180.0 / kPi;
+  return degrees <= smallestDegrees + 1e-6;
+}
+
+/// The splits (splitAndPolish) from r as it stands and, where the face with r's smallest angle is
+/// a thin ear the cuts' judge (cutThinEars) lets be cut, from r with its thin ears cut too: the
+/// better angles kept (betterAngles; r's own splits when the other's are not better), as
+/// SurfaceRemeshParams::earsBeforeSplits says. `distance` as polishAgain's; -1 again where a
+/// split was kept.
+void splitWithAndWithoutEars(const TriMesh& input, const Prepared& prepared, const SurfaceRemeshParams& params,
+                             SurfaceRemeshResult& r, double& distance) {
+  const double relaxation = r.times.relaxation;  // each branch adds its laps to its own
+  const double smallest = angleStatistics(r.mesh).minDegrees;
+  std::optional<SurfaceRemeshResult> cut;
+  double cutDistance = distance;
+  if (params.cutThinEars && params.earsBeforeSplits && smallestIsAThinEar(r.mesh, smallest)) {
+    cut = r;
+    cutThinEars(input, params, *cut, cutDistance);
+    if (!(angleStatistics(cut->mesh).minDegrees > smallest)) {
+      r.times.relaxation += cut->times.relaxation - relaxation;
+      cut.reset();
+    }
+  }
+  const auto split = [&](SurfaceRemeshResult& s, double& d) {
+    const int rounds = s.splitRounds;
+    splitAndPolish(prepared, params, s);
+    if (s.splitRounds != rounds) d = -1.0;
+  };
+  split(r, distance);
+  if (!cut) return;
+  split(*cut, cutDistance);
+  if (!betterAngles(angleStatistics(cut->mesh), angleStatistics(r.mesh))) {
+    r.times.relaxation += cut->times.relaxation - relaxation;
+    return;
+  }
+  cut->times.relaxation += r.times.relaxation - relaxation;
+  r = std::move(*cut);
+  distance = cutDistance;
+}
+
 /// An output with more vertices than the input is no remesh (many components and boundary loops
 /// at a small count: boeing.off at 10% needs 5,549 vertices for its 2,741): the input, oriented
 /// (the prepared copy), is kept instead, each vertex its own cell. Not for an input with isolated vertices, which an
@@ -1181,8 +1229,8 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   Expected<SurfaceRemeshResult> r = remeshWhole(input, metric, prepared, p, remeshShare, progress);
   if (!r) return r.status();
   if (Status s = restartSmallOutput(input, metric, prepared, p, progress.sub(0.0, remeshShare), *r); !s) return s;
-  splitAndPolish(prepared, p, *r);
   double distance = -1.0;  // r's distance to the input (outputDistance) once measured, for the last steps' judges
+  splitWithAndWithoutEars(input, prepared, p, *r, distance);
   polishAgain(input, prepared, p, *r, distance);
   cutThinEars(input, p, *r, distance);
   climbJointlyAtLast(input, prepared, p, *r, distance);

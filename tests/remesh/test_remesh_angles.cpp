@@ -109,7 +109,9 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgal,
 // lion at 10%; and the tiny holes' rings left where they are (the relaxation's tiny loops,
 // surface_relaxation.h): ChineseDragon-10kv at 5% and 30% (and at 10%, above); and the joint
 // climbs (SurfaceRemeshParams::jointClimbVertices): patch-13 at 5%; and the starts from the
-// corners (SurfaceRemeshParams::cornerStarts): patch-23 at 5% and 10%.
+// corners (SurfaceRemeshParams::cornerStarts): patch-23 at 5% and 10%; and the splits from the
+// output with its thin ears cut too (SurfaceRemeshParams::earsBeforeSplits): mech-holes-shark at
+// 10%.
 class RemeshAnglesAgainstCgalAtOtherCounts : public ::testing::TestWithParam<std::pair<std::string, int>> {};
 
 TEST_P(RemeshAnglesAgainstCgalAtOtherCounts, SmallestAngleAndShareUnder30AtLeastAsGood) {
@@ -137,7 +139,8 @@ INSTANTIATE_TEST_SUITE_P(
         std::pair<std::string, int>{"mannequin-devil.off", 5}, std::pair<std::string, int>{"anchor_dense.off", 30},
         std::pair<std::string, int>{"lion.off", 10}, std::pair<std::string, int>{"ChineseDragon-10kv.off", 5},
         std::pair<std::string, int>{"ChineseDragon-10kv.off", 30}, std::pair<std::string, int>{"patch-13.off", 5},
-        std::pair<std::string, int>{"patch-23.off", 5}, std::pair<std::string, int>{"patch-23.off", 10}),
+        std::pair<std::string, int>{"patch-23.off", 5}, std::pair<std::string, int>{"patch-23.off", 10},
+        std::pair<std::string, int>{"mech-holes-shark.off", 10}),
     [](const ::testing::TestParamInfo<std::pair<std::string, int>>& p) {
       return test::testNameOfFile(p.param.first) + "_" + std::to_string(p.param.second);
     });
@@ -528,13 +531,16 @@ TEST(RemeshAngles, LastPolishesFartherFromTheInputAreRefused) {
 }
 
 // The joint climbs (SurfaceRemeshParams::jointClimbVertices): lion at 10% remeshed without them and
-// with them. Without, the polish's one-vertex climbs leave 20.2 degrees; with them the smallest
+// with them, the splits from the starts' output alone on both sides (earsBeforeSplits off: with
+// it, an ear cut before the splits leaves 32.2 degrees for the climbs). Without, the polish's
+// one-vertex climbs leave 20.2 degrees; with them the smallest
 // angle is more than 5 degrees higher, no more faces under 30, the oracle's two-sided Hausdorff
 // distance no larger (they are kept only where the remesh's own distance does not grow), the same
 // triangles (they move vertices only), the topology recounted, no new crossing faces (CGAL).
 TEST(RemeshAngles, JointClimbsRaiseTheSmallestAngleNotTheDistance) {
-  const BeforeAndAfter b =
-      remeshBeforeAndAfter("lion.off", 10, [](SurfaceRemeshParams& p) { p.jointClimbVertices = 0; });
+  const BeforeAndAfter b = remeshBeforeAndAfter(
+      "lion.off", 10, [](SurfaceRemeshParams& p) { p.jointClimbVertices = 0; },
+      [](SurfaceRemeshParams& p) { p.earsBeforeSplits = false; });
   ASSERT_TRUE(b.before) << b.before.status().message;
   ASSERT_TRUE(b.after) << b.after.status().message;
   const Figures f = figuresOf(b);
@@ -562,7 +568,8 @@ std::pair<double, int> smallestAndUnder30(const TriMesh& mesh) {
   return {smallest, under};
 }
 
-// climbJointly on its own, on lion's output at 10% without joint climbs: the smallest angle rises,
+// climbJointly on its own, on lion's output at 10% without joint climbs (and without the ears cut
+// before the splits, as above): the smallest angle rises,
 // no face is added under 30 degrees, the triangles stay, every vertex stays at its point of the
 // input, and only the worst faces' vertices move (none farther than a mean edge). With the worst
 // face's vertices pinned it moves nothing; pins of the wrong size are refused, the mesh
@@ -573,6 +580,7 @@ TEST(RemeshAngles, ClimbJointlyMovesTheWorstFacesVerticesTogether) {
   params.sampling.targetCount = input.vertexCount() / 10;
   params.measure = false;
   params.jointClimbVertices = 0;
+  params.earsBeforeSplits = false;
   const Expected<SurfaceRemeshResult> r = remeshSurface(input, params);
   ASSERT_TRUE(r) << r.status().message;
   ASSERT_TRUE(test::recount(input.triangles, input.vertexCount()).oriented) << "the input is the surface climbed on";
@@ -616,11 +624,14 @@ TEST(RemeshAngles, ClimbJointlyMovesTheWorstFacesVerticesTogether) {
   EXPECT_EQ(held.positions, r->mesh.positions);
 }
 
-/// `name` at `percent` without and with the thin ears cut (SurfaceRemeshParams::cutThinEars): at
-/// least one cut, the smallest angle up by more than `gain` degrees, fewer faces under 30, the
-/// oracle's two-sided Hausdorff no larger, the topology recounted, no crossing faces by CGAL.
+/// `name` at `percent` without and with the thin ears cut (SurfaceRemeshParams::cutThinEars; last
+/// only, without earsBeforeSplits on both sides): at least one cut, the smallest angle up by more
+/// than `gain` degrees, fewer faces under 30, the oracle's two-sided Hausdorff no larger, the
+/// topology recounted, no crossing faces by CGAL.
 void expectThinEarsCut(const std::string& name, int percent, double gain) {
-  const BeforeAndAfter b = remeshBeforeAndAfter(name, percent, [](SurfaceRemeshParams& p) { p.cutThinEars = false; });
+  const BeforeAndAfter b = remeshBeforeAndAfter(
+      name, percent, [](SurfaceRemeshParams& p) { p.cutThinEars = false; },
+      [](SurfaceRemeshParams& p) { p.earsBeforeSplits = false; });
   ASSERT_TRUE(b.before) << b.before.status().message;
   ASSERT_TRUE(b.after) << b.after.status().message;
   const Figures f = figuresOf(b);
@@ -675,6 +686,35 @@ TEST(RemeshAngles, ThinEarsFartherFromTheInputAreKept) {
   EXPECT_EQ(b.after->thinEars, 0);
   EXPECT_EQ(b.after->mesh.positions, b.before->mesh.positions);
   EXPECT_EQ(b.after->mesh.triangles, b.before->mesh.triangles);
+}
+
+// The splits also from the output with its thin ears cut (SurfaceRemeshParams::earsBeforeSplits):
+// mech-holes-shark at 10% left its starts with an ear of 17.4 degrees, its smallest angle; the
+// splits turned it into two faces no cut takes (17.5 degrees at last). With the ears cut before
+// the splits too, that output's angles are the better and are kept: the smallest angle above 30
+// degrees, no face under 30, the input's topology recounted, no crossing faces (CGAL). At 5% the
+// ears cut first would not raise the smallest angle (a face that is no ear holds it): the splits
+// from the starts' output alone, the same output with and without.
+TEST(RemeshAngles, SplitsAlsoFromTheOutputWithItsThinEarsCut) {
+  const auto splitsFirst = [](SurfaceRemeshParams& p) { p.earsBeforeSplits = false; };
+  const BeforeAndAfter b = remeshBeforeAndAfter("mech-holes-shark.off", 10, splitsFirst);
+  ASSERT_TRUE(b.before) << b.before.status().message;
+  ASSERT_TRUE(b.after) << b.after.status().message;
+  const Figures f = figuresOf(b);
+  printFigures("mech-holes-shark at 10% (" + std::to_string(b.after->thinEars) + " thin ears cut)", f);
+  EXPECT_GT(f.after.smallestDegrees, f.before.smallestDegrees + 10.0);
+  EXPECT_GE(f.after.smallestDegrees, 30.0);
+  EXPECT_EQ(f.after.shareBelow30, 0.0);
+  EXPECT_GT(f.before.shareBelow30, 0.0);
+  EXPECT_GE(b.after->thinEars, 1);
+  expectValidWithoutNewCrossings(b);
+
+  const BeforeAndAfter same = remeshBeforeAndAfter("mech-holes-shark.off", 5, splitsFirst);
+  ASSERT_TRUE(same.before) << same.before.status().message;
+  ASSERT_TRUE(same.after) << same.after.status().message;
+  EXPECT_EQ(same.after->mesh.positions, same.before->mesh.positions);
+  EXPECT_EQ(same.after->mesh.triangles, same.before->mesh.triangles);
+  EXPECT_GT(same.after->splitRounds, 0) << "the splits kept from the starts' output";
 }
 
 // Flat ears off the boundary (removeFlatEars): lion-head at 30% had two ears of 5.8 and 6.2

@@ -43,7 +43,12 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
           ")" +
           (r.droppedSamples > 0 ? ", " + count(r.droppedSamples) + " left out (nearest to no vertex)" : std::string()) +
           (r.collapsedVertices > 0
-               ? ", " + count(r.collapsedVertices) + " removed by edge collapses to reach the count asked for"
+               ? ", " + count(r.collapsedVertices) + " removed by edge collapses to reach the count asked for" +
+                     (r.worstFaceCollapses > 0
+                          ? " (" + count(r.worstFaceCollapses) +
+                                " of them last, at the triangle with the smallest angle, where that raised it and the "
+                                "distance to the input did not grow)"
+                          : std::string())
                : std::string()) +
           (r.removedEars > r.thinEars
                ? ", " + count(r.removedEars - r.thinEars) +

@@ -899,6 +899,21 @@ double outputDistance(const TriMesh& input, const SurfaceRemeshResult& r) {
   return std::max(d.toInput.max, d.fromInput.max);
 }
 
+/// Whether `other`, r changed, is to be kept: better angles than `before` (r's; betterAngles),
+/// neither figure worse, and no farther from the input than r (outputDistance; `distance`: r's if
+/// known, else negative, then measured). If so, `before` and `distance` become other's.
+bool betterAndNoFarther(const TriMesh& input, const SurfaceRemeshResult& r, const SurfaceRemeshResult& other,
+                        AngleStatistics& before, double& distance) {
+  const AngleStatistics after = angleStatistics(other.mesh);
+  if (!betterAngles(after, before) || worseAngles(after, before)) return false;
+  if (distance < 0) distance = outputDistance(input, r);
+  const double d = outputDistance(input, other);
+  if (d > distance) return false;
+  distance = d;
+  before = after;
+  return true;
+}
+
 /// The last polishes (SurfaceRemeshParams::lastPolishVertices): r polished again from where it
 /// stands with the relaxation's deviation limit, then with restartDeviation's, each kept only if
 /// its angles are better and neither worse, with no more crossing pairs and no farther from the
@@ -919,14 +934,7 @@ void polishAgain(const TriMesh& input, const Prepared& prepared, const SurfaceRe
     polished.relaxation.polishMoves = 0;  // this polish's, then added to r's
     polishOutput(prepared, looser, polished);
     polished.relaxation.polishMoves += r.relaxation.polishMoves;
-    const AngleStatistics after = angleStatistics(polished.mesh);
-    if (!betterAngles(after, before) || worseAngles(after, before) || polished.crossingPairs > r.crossingPairs)
-      continue;
-    if (distance < 0) distance = outputDistance(input, r);
-    const double d = outputDistance(input, polished);
-    if (d > distance) continue;
-    distance = d;
-    before = after;
+    if (polished.crossingPairs > r.crossingPairs || !betterAndNoFarther(input, r, polished, before, distance)) continue;
     r = std::move(polished);
     ++r.lastPolishes;
   }
@@ -1043,6 +1051,53 @@ void splitWithAndWithoutEars(const TriMesh& input, const Prepared& prepared, con
   cut->times.relaxation += r.times.relaxation - relaxation;
   r = std::move(*cut);
   distance = cutDistance;
+}
+
+/// The vertices of the face of `mesh` with the smallest angle unflagged, every other flagged.
+std::vector<char> allButTheWorstFace(const TriMesh& mesh) {
+  int worst = 0;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+    const double angle = std::min({angleAt(a, b, c), angleAt(b, c, a), angleAt(c, a, b)});
+    if (angle < smallest) smallest = angle, worst = f;
+  }
+  std::vector<char> keep(mesh.vertexCount(), 1);
+  for (const int v : mesh.triangles[worst]) keep[v] = 0;
+  return keep;
+}
+
+/// The collapses at the face with the smallest angle (SurfaceRemeshParams::worstFaceCollapses).
+/// `distance` as polishAgain's.
+void collapseWorstFaces(const TriMesh& input, const Metric& metric, const SurfaceRemeshParams& params,
+                        SurfaceRemeshResult& r, double& distance) {
+  const RelaxationParams& relaxation = params.relaxation;
+  if (params.worstFaceCollapses <= 0 || r.countAsked <= 0 || r.mesh.vertexCount() > params.jointClimbVertices ||
+      relaxation.iterations <= 0 || r.looksLikeTriangleSoup || r.inputKept)
+    return;
+  auto clock = std::chrono::steady_clock::now();
+  AngleStatistics before = angleStatistics(r.mesh);
+  const double above = (1.0 + params.countTolerance) * r.countAsked;  // collapseToAsked's bound
+  for (int k = 0; k < params.worstFaceCollapses && r.mesh.vertexCount() > above &&
+                  before.minDegrees < SurfaceRemeshParams::kLastPolishBelowDegrees;
+       ++k) {
+    SurfaceRemeshResult collapsed = r;
+    std::vector<double> weight = outputWeights(input, metric, collapsed);
+    if (collapseToCount(collapsed.mesh, collapsed.origin, weight, collapsed.cell, r.mesh.vertexCount() - 1,
+                        allButTheWorstFace(r.mesh))
+            .collapsed == 0)
+      break;
+    ++collapsed.collapsedVertices;  // before its distance: its cells are no longer Voronoi cells
+    ++collapsed.worstFaceCollapses;
+    if (!betterAndNoFarther(input, r, collapsed, before, distance)) break;
+    r = std::move(collapsed);
+  }
+  if (r.worstFaceCollapses > 0 && r.crossingPairs > 0)  // a face gone may have crossed
+    r.crossingPairs = static_cast<int>(selfIntersectingFaces(r.mesh).size());
+  if (r.worstFaceCollapses > 0 && r.crossingPairs == 0 && r.fewestCount > 0)
+    r.fewestCount = std::min(r.fewestCount, r.mesh.vertexCount());
+  r.times.relaxation += lap(clock);
 }
 
 /// An output with more vertices than the input is no remesh (many components and boundary loops
@@ -1234,6 +1289,7 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   polishAgain(input, prepared, p, *r, distance);
   cutThinEars(input, p, *r, distance);
   climbJointlyAtLast(input, prepared, p, *r, distance);
+  collapseWorstFaces(input, metric, p, *r, distance);
   r->times.prepare += prepared.prepareSeconds;  // once for the call, whatever start was kept
   r->times.engine += prepared.engineSeconds;
   auto clock = std::chrono::steady_clock::now();

@@ -259,6 +259,14 @@ struct SurfaceRemeshParams {
   /// of climbs and 300 of distances, fandisk at 10% (648 vertices at 40.3 degrees) 40 -> 103 ms.
   /// 0 = never.
   int jointClimbVertices = 2000;
+  /// Last, on an output still above the count asked for (of at most jointClimbVertices vertices,
+  /// its smallest angle under kLastPolishBelowDegrees): an edge of the face with the smallest
+  /// angle collapsed (collapseToCount with every other vertex kept: the shortest edge one of its
+  /// three vertices may go along, by the collapses' checks), again at each new worst face, up to
+  /// this many times, each kept only if the share of faces under 30 degrees falls, or stays and
+  /// the smallest angle rises, neither getting worse, and the distance to the input (its
+  /// centroids and midpoints too) does not grow; the relaxation's outputs only. 0 = never.
+  int worstFaceCollapses = 8;
   /// Also measure the output: angle statistics and (measureDistance) the surface distance to the
   /// input both ways (the figures of the filters' log).
   bool measure = true;
@@ -352,6 +360,9 @@ struct SurfaceRemeshResult {
   int splitRounds = 0;
   int lastPolishes = 0;  ///< last polishes kept, 0 to 2 (SurfaceRemeshParams::lastPolishVertices)
   int jointMoves = 0;    ///< joint moves kept, of 2 or 3 vertices each (SurfaceRemeshParams::jointClimbVertices)
+  /// Of collapsedVertices, those removed last at the face with the smallest angle
+  /// (SurfaceRemeshParams::worstFaceCollapses).
+  int worstFaceCollapses = 0;
   int repairRounds = 0;
   /// Of repairRounds, those that added samples where output triangles crossed each other
   /// (DelaunayParams::maxCrossingRounds).

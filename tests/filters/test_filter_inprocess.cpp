@@ -697,6 +697,22 @@ TEST_F(FilterInProcess, UniformRemeshLogsAStartFromTheCorners) {
   EXPECT_NE(logText().find("from the corners of the input's boundaries and creases"), std::string::npos) << logText();
 }
 
+// The collapses at the worst face (SurfaceRemeshParams::worstFaceCollapses) are logged among the
+// edge collapses: pig at 30%, whose output is above the count by a split's vertex, as the core run
+// on the filter's input says.
+TEST_F(FilterInProcess, UniformRemeshLogsItsCollapsesAtTheWorstFace) {
+  const std::optional<SurfaceRemeshResult> r = uniformAndItsCore("pig.off", 30);
+  ASSERT_TRUE(r) << logText();
+  ASSERT_GE(r->worstFaceCollapses, 1);
+  EXPECT_EQ(doc.mm()->cm.VN(), r->mesh.vertexCount());
+  const std::string line = std::to_string(r->collapsedVertices) +
+                           " removed by edge collapses to reach the count asked for (" +
+                           std::to_string(r->worstFaceCollapses) +
+                           " of them last, at the triangle with the smallest angle, where that raised it and the "
+                           "distance to the input did not grow)";
+  EXPECT_NE(logText().find(line), std::string::npos) << line << " in " << logText();
+}
+
 // The last polishes (SurfaceRemeshParams::lastPolishVertices) are logged: holes at 5%, whose
 // output is polished again once, as the core run on the filter's input says. (Through MeshLab's
 // float coordinates the outputs differ from the core's on the file's doubles: mannequin-devil at

@@ -3,6 +3,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -21,6 +22,11 @@ inline Vec3 areaNormal(const TriMesh& mesh, int face) { return areaNormal(mesh, 
 inline double angleAt(const Vec3& p, const Vec3& q, const Vec3& r) {
   const Vec3 u = q - p, w = r - p;
   return std::atan2(u.cross(w).norm(), u.dot(w));
+}
+
+/// Smallest angle of the triangle (p, q, r), in radians (angleAt at each corner).
+inline double smallestAngle(const Vec3& p, const Vec3& q, const Vec3& r) {
+  return std::min({angleAt(p, q, r), angleAt(q, r, p), angleAt(r, p, q)});
 }
 
 /// Per face, its unit normal (zero for a face of no area).

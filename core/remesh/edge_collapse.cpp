@@ -354,7 +354,7 @@ std::vector<int> thinEars(const TriMesh& mesh, double maxDepth) {
     if (tip < 0) continue;
     const Vec3 &pm = mesh.positions[mesh.vertex(tip)], &pa = mesh.positions[mesh.vertex(TriMesh::next(tip))],
                &pb = mesh.positions[mesh.vertex(TriMesh::prev(tip))];
-    const double smallest = std::min({angleAt(pm, pa, pb), angleAt(pa, pb, pm), angleAt(pb, pm, pa)});
+    const double smallest = smallestAngle(pm, pa, pb);
     const double base = (pb - pa).norm();
     if (smallest < kEarAngle && base > 0 && (pa - pm).cross(pb - pm).norm() / base <= maxDepth)
       ears.push_back({smallest, f});

@@ -1012,9 +1012,8 @@ bool smallestIsAThinEar(const TriMesh& mesh, double smallestDegrees) {
   const std::vector<int> ears = thinEars(mesh, std::numeric_limits<double>::infinity());
   if (ears.empty()) return false;
   const Tri& t = mesh.triangles[ears.front()];  // the thinnest
-  const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
-  const double degrees = std::min({angleAt(a, b, c), angleAt(b, c, a), angleAt(c, a, b)}) * 180.0 / kPi;
-  return degrees <= smallestDegrees + 1e-6;
+  const double degrees = smallestAngle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]) * 180.0 / kPi;
+  return degrees <= smallestDegrees + 1e-6;  // angleStatistics measures by acos, angleAt by atan2
 }
 
 /// The splits (splitAndPolish) from r as it stands and, where the face with r's smallest angle is
@@ -1059,8 +1058,7 @@ std::vector<char> allButTheWorstFace(const TriMesh& mesh) {
   double smallest = std::numeric_limits<double>::infinity();
   for (int f = 0; f < mesh.faceCount(); ++f) {
     const Tri& t = mesh.triangles[f];
-    const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
-    const double angle = std::min({angleAt(a, b, c), angleAt(b, c, a), angleAt(c, a, b)});
+    const double angle = smallestAngle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
     if (angle < smallest) smallest = angle, worst = f;
   }
   std::vector<char> keep(mesh.vertexCount(), 1);
@@ -1079,12 +1077,13 @@ void collapseWorstFaces(const TriMesh& input, const Metric& metric, const Surfac
   auto clock = std::chrono::steady_clock::now();
   AngleStatistics before = angleStatistics(r.mesh);
   const double above = (1.0 + params.countTolerance) * r.countAsked;  // collapseToAsked's bound
+  std::vector<double> weight = outputWeights(input, metric, r);       // compacted with the vertices kept
   for (int k = 0; k < params.worstFaceCollapses && r.mesh.vertexCount() > above &&
                   before.minDegrees < SurfaceRemeshParams::kLastPolishBelowDegrees;
        ++k) {
     SurfaceRemeshResult collapsed = r;
-    std::vector<double> weight = outputWeights(input, metric, collapsed);
-    if (collapseToCount(collapsed.mesh, collapsed.origin, weight, collapsed.cell, r.mesh.vertexCount() - 1,
+    std::vector<double> collapsedWeight = weight;
+    if (collapseToCount(collapsed.mesh, collapsed.origin, collapsedWeight, collapsed.cell, r.mesh.vertexCount() - 1,
                         allButTheWorstFace(r.mesh))
             .collapsed == 0)
       break;
@@ -1092,6 +1091,7 @@ void collapseWorstFaces(const TriMesh& input, const Metric& metric, const Surfac
     ++collapsed.worstFaceCollapses;
     if (!betterAndNoFarther(input, r, collapsed, before, distance)) break;
     r = std::move(collapsed);
+    weight = std::move(collapsedWeight);
   }
   if (r.worstFaceCollapses > 0 && r.crossingPairs > 0)  // a face gone may have crossed
     r.crossingPairs = static_cast<int>(selfIntersectingFaces(r.mesh).size());

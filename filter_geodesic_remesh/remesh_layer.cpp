@@ -15,6 +15,17 @@ std::string count(int n) { return std::to_string(n); }
 /// "1 round", "n rounds".
 std::string rounds(int n) { return count(n) + (n == 1 ? " round" : " rounds"); }
 
+/// What the edge collapses were for: the count asked for, the worst faces last, or both.
+std::string collapses(const SurfaceRemeshResult& r) {
+  const int toCount = r.collapsedVertices - r.worstFaceCollapses;
+  const std::string worst =
+      " last, at the triangle with the smallest angle, where that raised it and the distance to "
+      "the input did not grow";
+  if (r.worstFaceCollapses == 0) return " to reach the count asked for";
+  if (toCount == 0) return worst;
+  return " to reach the count asked for (" + count(r.worstFaceCollapses) + " of them" + worst + ")";
+}
+
 /// Faces that ran against their neighbours: the work used an oriented copy.
 void logOrientation(const TriMesh& input, const SurfaceRemeshResult& r, FilterContext& ctx) {
   if (r.reorientedFaces == 0) return;
@@ -42,14 +53,8 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
                                 : std::string()) +
           ")" +
           (r.droppedSamples > 0 ? ", " + count(r.droppedSamples) + " left out (nearest to no vertex)" : std::string()) +
-          (r.collapsedVertices > 0
-               ? ", " + count(r.collapsedVertices) + " removed by edge collapses to reach the count asked for" +
-                     (r.worstFaceCollapses > 0
-                          ? " (" + count(r.worstFaceCollapses) +
-                                " of them last, at the triangle with the smallest angle, where that raised it and the "
-                                "distance to the input did not grow)"
-                          : std::string())
-               : std::string()) +
+          (r.collapsedVertices > 0 ? ", " + count(r.collapsedVertices) + " removed by edge collapses" + collapses(r)
+                                   : std::string()) +
           (r.removedEars > r.thinEars
                ? ", " + count(r.removedEars - r.thinEars) +
                      " removed with flat ears off the boundary (a triangle with two boundary edges and an "
@@ -133,6 +138,11 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
                                   (r.lastPolishes == 1 ? std::string("once") : count(r.lastPolishes) + " times") +
                                   " (better angles, no farther from the input)"
                             : std::string()) +
+        (r.floorPolishes > 0
+             ? "; then polished " + (r.floorPolishes == 1 ? std::string("once") : count(r.floorPolishes) + " times") +
+                   " more from where it stood, the input's boundaries and creases held (better "
+                   "angles, no farther from the input)"
+             : std::string()) +
         (r.jointMoves > 0
              ? "; " + count(r.jointMoves) + " joint moves of the worst faces' vertices (no farther from the input)"
              : std::string()) +

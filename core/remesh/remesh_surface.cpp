@@ -761,14 +761,13 @@ bool worseAngles(const AngleStatistics& a, const AngleStatistics& b) {
 
 /// `mesh` (with its points on the input, `origin`) polished (polishOnSurface) on the oriented
 /// input. A polish that makes more of its faces cross than `crossingPairs` is done again with the
-/// corners of the crossing faces and their neighbours pinned, up to kPolishPinRounds times, else
+/// corners of the crossing faces and their neighbours pinned, up to `pinRounds` times, else
 /// not kept. Returns the polish kept, if any.
 std::optional<RelaxationResult> polishWithoutCrossing(const Prepared& prepared, const RelaxationParams& relaxation,
                                                       PolishGuard guard, int crossingPairs, TriMesh& mesh,
-                                                      std::vector<SurfacePoint>& origin) {
-  constexpr int kPolishPinRounds = 2;
+                                                      std::vector<SurfacePoint>& origin, int pinRounds = 2) {
   const std::vector<char>& flipped = prepared.oriented.flipped;
-  for (int round = 0; round <= kPolishPinRounds; ++round) {
+  for (int round = 0; round <= pinRounds; ++round) {
     TriMesh polished = mesh;
     std::vector<SurfacePoint> points = origin;
     swapFlipped(points, flipped);
@@ -1052,8 +1051,8 @@ void splitWithAndWithoutEars(const TriMesh& input, const Prepared& prepared, con
   distance = cutDistance;
 }
 
-/// The vertices of the face of `mesh` with the smallest angle unflagged, every other flagged.
-std::vector<char> allButTheWorstFace(const TriMesh& mesh) {
+/// The face of `mesh` with the smallest angle.
+int worstFace(const TriMesh& mesh) {
   int worst = 0;
   double smallest = std::numeric_limits<double>::infinity();
   for (int f = 0; f < mesh.faceCount(); ++f) {
@@ -1061,31 +1060,57 @@ std::vector<char> allButTheWorstFace(const TriMesh& mesh) {
     const double angle = smallestAngle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
     if (angle < smallest) smallest = angle, worst = f;
   }
-  std::vector<char> keep(mesh.vertexCount(), 1);
-  for (const int v : mesh.triangles[worst]) keep[v] = 0;
-  return keep;
+  return worst;
 }
 
-/// The collapses at the face with the smallest angle (SurfaceRemeshParams::worstFaceCollapses).
+/// A corner of `face` at a vertex inside the surface with three faces (no boundary edge around
+/// it), or -1. Its faces split the triangle of its neighbours in three, so one of them has an
+/// angle of at most half that triangle's smallest: 30 degrees at best.
+int innerVertexOfThreeFaces(const TriMesh& mesh, int face) {
+  for (const int v : mesh.triangles[face]) {
+    if (mesh.valence(v) != 3) continue;
+    bool inner = true;
+    for (const int* c = mesh.cornersBegin(v); c != mesh.cornersEnd(v); ++c)
+      inner &= mesh.oppositeCorner[TriMesh::next(*c)] >= 0 && mesh.oppositeCorner[TriMesh::prev(*c)] >= 0;
+    if (inner) return v;
+  }
+  return -1;
+}
+
+/// The collapses at the face with the smallest angle (SurfaceRemeshParams::worstFaceCollapses):
+/// of any of its vertices on an output above the count asked for, of its vertex with three
+/// faces (innerVertexOfThreeFaces) on one within the count's tolerance below it too.
 /// `distance` as polishAgain's.
 void collapseWorstFaces(const TriMesh& input, const Metric& metric, const SurfaceRemeshParams& params,
                         SurfaceRemeshResult& r, double& distance) {
   const RelaxationParams& relaxation = params.relaxation;
-  if (params.worstFaceCollapses <= 0 || r.countAsked <= 0 || r.mesh.vertexCount() > params.jointClimbVertices ||
-      relaxation.iterations <= 0 || r.looksLikeTriangleSoup || r.inputKept)
+  if (params.worstFaceCollapses <= 0 || r.countAsked <= 0 || relaxation.iterations <= 0 || r.looksLikeTriangleSoup ||
+      r.inputKept)
+    return;
+  const double above = (1.0 + params.countTolerance) * r.countAsked;  // collapseToAsked's bound
+  const double below = (1.0 - params.countTolerance) * r.countAsked;
+  const auto allowed = [&](int n, int three) {
+    return (n > above && n <= params.jointClimbVertices) || (three >= 0 && n > below && n <= params.floorVertices);
+  };
+  AngleStatistics before = angleStatistics(r.mesh);
+  if (!(before.minDegrees < SurfaceRemeshParams::kLastPolishBelowDegrees) ||
+      !allowed(r.mesh.vertexCount(), innerVertexOfThreeFaces(r.mesh, worstFace(r.mesh))))
     return;
   auto clock = std::chrono::steady_clock::now();
-  AngleStatistics before = angleStatistics(r.mesh);
-  const double above = (1.0 + params.countTolerance) * r.countAsked;  // collapseToAsked's bound
-  std::vector<double> weight = outputWeights(input, metric, r);       // compacted with the vertices kept
-  for (int k = 0; k < params.worstFaceCollapses && r.mesh.vertexCount() > above &&
-                  before.minDegrees < SurfaceRemeshParams::kLastPolishBelowDegrees;
+  std::vector<double> weight = outputWeights(input, metric, r);  // compacted with the vertices kept
+  for (int k = 0; k < params.worstFaceCollapses && before.minDegrees < SurfaceRemeshParams::kLastPolishBelowDegrees;
        ++k) {
+    const int worst = worstFace(r.mesh), three = innerVertexOfThreeFaces(r.mesh, worst);
+    const int n = r.mesh.vertexCount();
+    if (!allowed(n, three)) break;
+    std::vector<char> keep(n, 1);  // every vertex but the worst face's, or but its vertex with three faces
+    if (three >= 0 && !(n > above && n <= params.jointClimbVertices))
+      keep[three] = 0;
+    else
+      for (const int v : r.mesh.triangles[worst]) keep[v] = 0;
     SurfaceRemeshResult collapsed = r;
     std::vector<double> collapsedWeight = weight;
-    if (collapseToCount(collapsed.mesh, collapsed.origin, collapsedWeight, collapsed.cell, r.mesh.vertexCount() - 1,
-                        allButTheWorstFace(r.mesh))
-            .collapsed == 0)
+    if (collapseToCount(collapsed.mesh, collapsed.origin, collapsedWeight, collapsed.cell, n - 1, keep).collapsed == 0)
       break;
     ++collapsed.collapsedVertices;  // before its distance: its cells are no longer Voronoi cells
     ++collapsed.worstFaceCollapses;
@@ -1098,6 +1123,53 @@ void collapseWorstFaces(const TriMesh& input, const Metric& metric, const Surfac
   if (r.worstFaceCollapses > 0 && r.crossingPairs == 0 && r.fewestCount > 0)
     r.fewestCount = std::min(r.fewestCount, r.mesh.vertexCount());
   r.times.relaxation += lap(clock);
+}
+
+/// The floor polishes (SurfaceRemeshParams::floorVertices): polishes from where r stands, one
+/// after the other with the margins kFloorMargins, the vertices on the input's feature curves
+/// held; the one with the best angles (betterAngles, none worse than r's) no farther from the
+/// input than r (outputDistance) and with no more crossing pairs is kept. `distance` as
+/// polishAgain's.
+void polishTheFloor(const TriMesh& input, const Prepared& prepared, const SurfaceRemeshParams& params,
+                    SurfaceRemeshResult& r, double& distance) {
+  const RelaxationParams& relaxation = params.relaxation;
+  if (r.mesh.vertexCount() > params.floorVertices || relaxation.iterations <= 0 || !relaxation.raiseSmallestAngle ||
+      relaxation.polishMarginDegrees < 0 || r.looksLikeTriangleSoup || r.inputKept)
+    return;
+  const AngleStatistics first = angleStatistics(r.mesh);
+  if (!(first.minDegrees < SurfaceRemeshParams::kLastPolishBelowDegrees)) return;
+  auto clock = std::chrono::steady_clock::now();
+  const double relaxationSeconds = r.times.relaxation;
+  RelaxationParams held = relaxation;
+  held.slideAlongFeatures = false;
+  AngleStatistics best = first;
+  SurfaceRemeshResult polished = r;
+  polished.relaxation.polishMoves = 0;  // the floor polishes', then added to r's
+  std::optional<SurfaceRemeshResult> kept;
+  double keptDistance = distance;
+  for (const double margin : SurfaceRemeshParams::kFloorMargins) {
+    held.polishMarginDegrees = margin;
+    const std::optional<RelaxationResult> done =
+        polishWithoutCrossing(prepared, held, PolishGuard{}, r.crossingPairs, polished.mesh, polished.origin, 0);
+    if (!done) break;  // nothing moved (or every try crossed): the next margins start from here too
+    polished.relaxation.polishMoves += done->polishMoves;
+    polished.relaxation.flips += done->flips;
+    ++polished.floorPolishes;
+    const AngleStatistics a = angleStatistics(polished.mesh);
+    if (!betterAngles(a, best) || worseAngles(a, first)) continue;
+    if (distance < 0) distance = keptDistance = outputDistance(input, r);
+    const double d = outputDistance(input, polished);
+    if (d > distance) continue;
+    best = a;
+    keptDistance = d;
+    kept = polished;
+  }
+  if (kept) {
+    kept->relaxation.polishMoves += r.relaxation.polishMoves;
+    r = std::move(*kept);
+    distance = keptDistance;
+  }
+  r.times.relaxation = relaxationSeconds + lap(clock);
 }
 
 /// An output with more vertices than the input is no remesh (many components and boundary loops
@@ -1290,6 +1362,7 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   cutThinEars(input, p, *r, distance);
   climbJointlyAtLast(input, prepared, p, *r, distance);
   collapseWorstFaces(input, metric, p, *r, distance);
+  polishTheFloor(input, prepared, p, *r, distance);
   r->times.prepare += prepared.prepareSeconds;  // once for the call, whatever start was kept
   r->times.engine += prepared.engineSeconds;
   auto clock = std::chrono::steady_clock::now();

@@ -1126,7 +1126,8 @@ void collapseWorstFaces(const TriMesh& input, const Metric& metric, const Surfac
 }
 
 /// The floor polishes (SurfaceRemeshParams::floorVertices): polishes from where r stands, one
-/// after the other with the margins kFloorMargins, the vertices on the input's feature curves
+/// after the other with the margins kFloorMargins (the first's aim at most
+/// kFloorFirstAimDegrees), the vertices on the input's feature curves
 /// held; the one with the best angles (betterAngles, none worse than r's) no farther from the
 /// input than r (outputDistance) and with no more crossing pairs is kept. `distance` as
 /// polishAgain's.
@@ -1148,7 +1149,10 @@ void polishTheFloor(const TriMesh& input, const Prepared& prepared, const Surfac
   std::optional<SurfaceRemeshResult> kept;
   double keptDistance = distance;
   for (const double margin : SurfaceRemeshParams::kFloorMargins) {
-    held.polishMarginDegrees = margin;
+    // The first aims at most at kFloorFirstAimDegrees: above it nearly every ring climbs.
+    held.polishMarginDegrees = polished.floorPolishes == 0
+                                   ? std::min(margin, SurfaceRemeshParams::kFloorFirstAimDegrees - first.minDegrees)
+                                   : margin;
     const std::optional<RelaxationResult> done =
         polishWithoutCrossing(prepared, held, PolishGuard{}, r.crossingPairs, polished.mesh, polished.origin, 0);
     if (!done) break;  // nothing moved (or every try crossed): the next margins start from here too

@@ -277,17 +277,25 @@ struct SurfaceRemeshParams {
   ///   countTolerance below the count asked for too: such a vertex splits the triangle of its
   ///   neighbours in three, and one of the three has an angle of at most 30 degrees;
   /// - then the floor polishes: polishes from where the output stands, one after the other with
-  ///   the margins kFloorMargins (the first lifts the aim of all that are near the smallest, the
-  ///   next ones climb from there), the vertices on the input's feature curves held; of them, the
+  ///   the margins kFloorMargins (the first aims 8 degrees above the smallest angle, at most at
+  ///   kFloorFirstAimDegrees, and lifts every ring near it; the next ones climb 3 degrees from
+  ///   there), the vertices on the input's feature curves held; of them, the
   ///   one with the best angles, none worse, no more crossing pairs and a distance to the input
   ///   (its centroids and midpoints too) no larger than before is kept.
   /// fandisk_large at 30% (4,752 vertices): one face of 22.9 degrees at a vertex with three faces,
-  /// the next at 30.3; the collapse, then 30.3 -> 38.0 degrees (CGAL's isotropic remeshing at our
-  /// count: 36.7), the two-sided Hausdorff distance 0.792 -> 0.780% of the diagonal. With the
+  /// the next at 30.3; the collapse, then 30.3 -> 38.8 degrees (CGAL's isotropic remeshing at our
+  /// count: 36.7), the two-sided Hausdorff distance 0.792 -> 0.715% of the diagonal. With the
   /// vertices sliding along the creases the polishes reach the same angles only farther from the
-  /// input. 0 = never.
+  /// input. Over the data set (docs/BENCHMARKS.md) 19 of 273 outputs change, all to better
+  /// angles, none farther. Cost where they run: fandisk_large at 30% 377 -> 1,152 ms, fandisk at
+  /// 30% (none kept) 322 -> 350 ms. 0 = never.
   int floorVertices = 5000;
   static constexpr std::array<double, 3> kFloorMargins{8.0, 3.0, 3.0};
+  /// The first floor polish aims at most this high (degrees): a polish's cost grows with the rings
+  /// under its aim, and from an output at 35 degrees an aim of 43 takes nearly all of them
+  /// (fandisk_large at 30% on MeshLab's float coordinates, 4,752 vertices at 35.0 degrees: the call
+  /// 269 -> 2,059 ms with none kept; 650 ms with this bound).
+  static constexpr double kFloorFirstAimDegrees = 38.0;
   /// Also measure the output: angle statistics and (measureDistance) the surface distance to the
   /// input both ways (the figures of the filters' log).
   bool measure = true;

@@ -1063,8 +1063,7 @@ int worstFace(const TriMesh& mesh) {
   return worst;
 }
 
-/// A corner of `face` at a vertex inside the surface with three faces (no boundary edge around
-/// it), or -1. Its faces split the triangle of its neighbours in three, so one of them has an
+/// The vertex of `face` inside the surface with three faces (no boundary edge around it), or -1. Its faces split the triangle of its neighbours in three, so one of them has an
 /// angle of at most half that triangle's smallest: 30 degrees at best.
 int innerVertexOfThreeFaces(const TriMesh& mesh, int face) {
   for (const int v : mesh.triangles[face]) {
@@ -1089,8 +1088,9 @@ void collapseWorstFaces(const TriMesh& input, const Metric& metric, const Surfac
     return;
   const double above = (1.0 + params.countTolerance) * r.countAsked;  // collapseToAsked's bound
   const double below = (1.0 - params.countTolerance) * r.countAsked;
+  const auto aboveTheCount = [&](int n) { return n > above && n <= params.jointClimbVertices; };
   const auto allowed = [&](int n, int three) {
-    return (n > above && n <= params.jointClimbVertices) || (three >= 0 && n > below && n <= params.floorVertices);
+    return aboveTheCount(n) || (three >= 0 && n > below && n <= params.floorVertices);
   };
   AngleStatistics before = angleStatistics(r.mesh);
   if (!(before.minDegrees < SurfaceRemeshParams::kLastPolishBelowDegrees) ||
@@ -1104,7 +1104,7 @@ void collapseWorstFaces(const TriMesh& input, const Metric& metric, const Surfac
     const int n = r.mesh.vertexCount();
     if (!allowed(n, three)) break;
     std::vector<char> keep(n, 1);  // every vertex but the worst face's, or but its vertex with three faces
-    if (three >= 0 && !(n > above && n <= params.jointClimbVertices))
+    if (three >= 0 && !aboveTheCount(n))
       keep[three] = 0;
     else
       for (const int v : r.mesh.triangles[worst]) keep[v] = 0;

@@ -898,17 +898,37 @@ double outputDistance(const TriMesh& input, const SurfaceRemeshResult& r) {
   return std::max(d.toInput.max, d.fromInput.max);
 }
 
+/// The last steps' judge of the distance to the input (outputDistance): the output's distance
+/// once measured, and the first one measured, which the thin ears' cuts may exceed by
+/// SurfaceRemeshParams::earSlack.
+struct LastDistance {
+  double slack = 0.0;
+  double current = -1.0;    ///< the output's, once measured; negative: to be measured
+  double reference = -1.0;  ///< the first measured
+  /// r's distance (the output's), measured if not known yet.
+  double of(const TriMesh& input, const SurfaceRemeshResult& r) {
+    if (current < 0) current = outputDistance(input, r);
+    if (reference < 0) reference = current;
+    return current;
+  }
+  /// Whether an output at distance d is no farther than the one measured (`of` called first).
+  bool noFarther(double d) const { return d <= current; }
+  /// Whether an output at distance d is no farther than the one measured or than the first one
+  /// with the slack (`of` called first).
+  bool withinSlack(double d) const { return d <= std::max(current, (1.0 + slack) * reference); }
+};
+
 /// Whether `other`, r changed, is to be kept: better angles than `before` (r's; betterAngles),
-/// neither figure worse, and no farther from the input than r (outputDistance; `distance`: r's if
-/// known, else negative, then measured). If so, `before` and `distance` become other's.
+/// neither figure worse, and a distance to the input `distance` allows. If so, `before` and
+/// `distance` become other's.
 bool betterAndNoFarther(const TriMesh& input, const SurfaceRemeshResult& r, const SurfaceRemeshResult& other,
-                        AngleStatistics& before, double& distance) {
+                        AngleStatistics& before, LastDistance& distance) {
   const AngleStatistics after = angleStatistics(other.mesh);
   if (!betterAngles(after, before) || worseAngles(after, before)) return false;
-  if (distance < 0) distance = outputDistance(input, r);
+  distance.of(input, r);
   const double d = outputDistance(input, other);
-  if (d > distance) return false;
-  distance = d;
+  if (!distance.noFarther(d)) return false;
+  distance.current = d;
   before = after;
   return true;
 }
@@ -916,10 +936,10 @@ bool betterAndNoFarther(const TriMesh& input, const SurfaceRemeshResult& r, cons
 /// The last polishes (SurfaceRemeshParams::lastPolishVertices): r polished again from where it
 /// stands with the relaxation's deviation limit, then with restartDeviation's, each kept only if
 /// its angles are better and neither worse, with no more crossing pairs and no farther from the
-/// input (outputDistance, the input's centroids and midpoints measured too; `distance`: r's if
-/// known, else negative; updated).
+/// input (outputDistance, the input's centroids and midpoints measured too; `distance`, the last
+/// steps' judge: r's measured if not yet known; updated).
 void polishAgain(const TriMesh& input, const Prepared& prepared, const SurfaceRemeshParams& params,
-                 SurfaceRemeshResult& r, double& distance) {
+                 SurfaceRemeshResult& r, LastDistance& distance) {
   if (r.mesh.vertexCount() > params.lastPolishVertices || r.inputKept) return;
   AngleStatistics before = angleStatistics(r.mesh);  // r's, taken once
   if (!(before.minDegrees < SurfaceRemeshParams::kLastPolishBelowDegrees)) return;
@@ -942,13 +962,16 @@ void polishAgain(const TriMesh& input, const Prepared& prepared, const SurfaceRe
 
 /// The thin ears (thinEars in edge_collapse.h) of an output the relaxation ran on, cut thinnest
 /// first, each kept only if the distance to the input (outputDistance, the input's centroids and
-/// midpoints too) does not grow; kEarRounds tried at most. That judge bounds how deep an ear may
-/// be: no point of the input may end farther from the output than the farthest one already is.
+/// midpoints too) does not grow beyond the larger of the output's and the first one measured
+/// raised by earSlack (LastDistance::withinSlack); kEarRounds tried at most. That judge bounds
+/// how deep an ear may be: no point of the input may end much farther from the output than the
+/// farthest one already is.
 /// (A bound of one mean output edge besides, the first version's, held ALSTOM_TEST4's ear of
 /// 2.15 edges at 10%: 6.9 degrees, cut 18.6, the distance the same.) A cut takes a face under 30
 /// degrees away and changes no other: no angle falls, nothing new crosses. `distance` as
 /// polishAgain's.
-void cutThinEars(const TriMesh& input, const SurfaceRemeshParams& params, SurfaceRemeshResult& r, double& distance) {
+void cutThinEars(const TriMesh& input, const SurfaceRemeshParams& params, SurfaceRemeshResult& r,
+                 LastDistance& distance) {
   if (!params.cutThinEars || params.relaxation.iterations <= 0 || r.looksLikeTriangleSoup || r.inputKept) return;
   auto clock = std::chrono::steady_clock::now();
   for (int tried = 0, cut = 1; cut && tried < kEarRounds;) {
@@ -957,10 +980,10 @@ void cutThinEars(const TriMesh& input, const SurfaceRemeshParams& params, Surfac
       if (tried++ == kEarRounds) break;
       SurfaceRemeshResult without = r;
       if (!removeEar(without.mesh, without.origin, without.cell, face)) continue;
-      if (distance < 0) distance = outputDistance(input, r);
+      distance.of(input, r);
       const double d = outputDistance(input, without);
-      if (d > distance) continue;
-      distance = d;
+      if (!distance.withinSlack(d)) continue;
+      distance.current = d;
       r = std::move(without);
       ++r.removedEars;
       ++r.thinEars;
@@ -980,7 +1003,7 @@ void cutThinEars(const TriMesh& input, const SurfaceRemeshParams& params, Surfac
 /// distance to the input (outputDistance; `distance` as polishAgain's) does not grow; the
 /// relaxation's outputs only.
 void climbJointlyAtLast(const TriMesh& input, const Prepared& prepared, const SurfaceRemeshParams& params,
-                        SurfaceRemeshResult& r, double& distance) {
+                        SurfaceRemeshResult& r, LastDistance& distance) {
   const RelaxationParams& relaxation = params.relaxation;
   if (r.mesh.vertexCount() > params.jointClimbVertices || relaxation.iterations <= 0 ||
       !relaxation.raiseSmallestAngle || relaxation.polishMarginDegrees < 0 || r.looksLikeTriangleSoup || r.inputKept)
@@ -994,10 +1017,10 @@ void climbJointlyAtLast(const TriMesh& input, const Prepared& prepared, const Su
   const Expected<int> moves = climbJointly(climbed.mesh, climbed.origin, prepared.surface(), relaxation);
   swapFlipped(climbed.origin, flipped);
   if (moves && *moves > 0) {
-    if (distance < 0) distance = outputDistance(input, r);
+    distance.of(input, r);
     const double after = outputDistance(input, climbed);
-    if (after <= distance) {
-      distance = after;
+    if (distance.noFarther(after)) {
+      distance.current = after;
       r = std::move(climbed);
       r.jointMoves = *moves;
     }
@@ -1018,14 +1041,14 @@ bool smallestIsAThinEar(const TriMesh& mesh, double smallestDegrees) {
 /// The splits (splitAndPolish) from r as it stands and, where the face with r's smallest angle is
 /// a thin ear the cuts' judge (cutThinEars) lets be cut, from r with its thin ears cut too: the
 /// better angles kept (betterAngles; r's own splits when the other's are not better), as
-/// SurfaceRemeshParams::earsBeforeSplits says. `distance` as polishAgain's; -1 again where a
+/// SurfaceRemeshParams::earsBeforeSplits says. `distance` as polishAgain's; unknown again where a
 /// split was kept.
 void splitWithAndWithoutEars(const TriMesh& input, const Prepared& prepared, const SurfaceRemeshParams& params,
-                             SurfaceRemeshResult& r, double& distance) {
+                             SurfaceRemeshResult& r, LastDistance& distance) {
   const double relaxation = r.times.relaxation;  // each branch adds its laps to its own
   const double smallest = angleStatistics(r.mesh).minDegrees;
   std::optional<SurfaceRemeshResult> cut;
-  double cutDistance = distance;
+  LastDistance cutDistance = distance;
   if (params.cutThinEars && params.earsBeforeSplits && smallestIsAThinEar(r.mesh, smallest)) {
     cut = r;
     cutThinEars(input, params, *cut, cutDistance);
@@ -1034,10 +1057,10 @@ void splitWithAndWithoutEars(const TriMesh& input, const Prepared& prepared, con
       cut.reset();
     }
   }
-  const auto split = [&](SurfaceRemeshResult& s, double& d) {
+  const auto split = [&](SurfaceRemeshResult& s, LastDistance& d) {
     const int rounds = s.splitRounds;
     splitAndPolish(prepared, params, s);
-    if (s.splitRounds != rounds) d = -1.0;
+    if (s.splitRounds != rounds) d.current = -1.0;
   };
   split(r, distance);
   if (!cut) return;
@@ -1081,7 +1104,7 @@ int innerVertexOfThreeFaces(const TriMesh& mesh, int face) {
 /// faces (innerVertexOfThreeFaces) on one within the count's tolerance below it too.
 /// `distance` as polishAgain's.
 void collapseWorstFaces(const TriMesh& input, const Metric& metric, const SurfaceRemeshParams& params,
-                        SurfaceRemeshResult& r, double& distance) {
+                        SurfaceRemeshResult& r, LastDistance& distance) {
   const RelaxationParams& relaxation = params.relaxation;
   if (params.worstFaceCollapses <= 0 || r.countAsked <= 0 || relaxation.iterations <= 0 || r.looksLikeTriangleSoup ||
       r.inputKept)
@@ -1132,7 +1155,7 @@ void collapseWorstFaces(const TriMesh& input, const Metric& metric, const Surfac
 /// input than r (outputDistance) and with no more crossing pairs is kept. `distance` as
 /// polishAgain's.
 void polishTheFloor(const TriMesh& input, const Prepared& prepared, const SurfaceRemeshParams& params,
-                    SurfaceRemeshResult& r, double& distance) {
+                    SurfaceRemeshResult& r, LastDistance& distance) {
   const RelaxationParams& relaxation = params.relaxation;
   if (r.mesh.vertexCount() > params.floorVertices || relaxation.iterations <= 0 || !relaxation.raiseSmallestAngle ||
       relaxation.polishMarginDegrees < 0 || r.looksLikeTriangleSoup || r.inputKept)
@@ -1147,7 +1170,7 @@ void polishTheFloor(const TriMesh& input, const Prepared& prepared, const Surfac
   SurfaceRemeshResult polished = r;
   polished.relaxation.polishMoves = 0;  // the floor polishes', then added to r's
   std::optional<SurfaceRemeshResult> kept;
-  double keptDistance = distance;
+  double keptDistance = distance.current;
   for (const double margin : SurfaceRemeshParams::kFloorMargins) {
     // The first aims at most at kFloorFirstAimDegrees: above it nearly every ring climbs.
     held.polishMarginDegrees = polished.floorPolishes == 0
@@ -1161,9 +1184,9 @@ void polishTheFloor(const TriMesh& input, const Prepared& prepared, const Surfac
     ++polished.floorPolishes;
     const AngleStatistics a = angleStatistics(polished.mesh);
     if (!betterAngles(a, best) || worseAngles(a, first)) continue;
-    if (distance < 0) distance = keptDistance = outputDistance(input, r);
+    if (distance.current < 0) keptDistance = distance.of(input, r);
     const double d = outputDistance(input, polished);
-    if (d > distance) continue;
+    if (!distance.noFarther(d)) continue;
     best = a;
     keptDistance = d;
     kept = polished;
@@ -1171,7 +1194,7 @@ void polishTheFloor(const TriMesh& input, const Prepared& prepared, const Surfac
   if (kept) {
     kept->relaxation.polishMoves += r.relaxation.polishMoves;
     r = std::move(*kept);
-    distance = keptDistance;
+    distance.current = keptDistance;
   }
   r.times.relaxation = relaxationSeconds + lap(clock);
 }
@@ -1360,7 +1383,7 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   Expected<SurfaceRemeshResult> r = remeshWhole(input, metric, prepared, p, remeshShare, progress);
   if (!r) return r.status();
   if (Status s = restartSmallOutput(input, metric, prepared, p, progress.sub(0.0, remeshShare), *r); !s) return s;
-  double distance = -1.0;  // r's distance to the input (outputDistance) once measured, for the last steps' judges
+  LastDistance distance{p.earSlack};  // the last steps' judge of the distance to the input
   splitWithAndWithoutEars(input, prepared, p, *r, distance);
   polishAgain(input, prepared, p, *r, distance);
   cutThinEars(input, p, *r, distance);

@@ -13,6 +13,9 @@ namespace {
 
 std::string count(int n) { return std::to_string(n); }
 /// "1 round", "n rounds".
+/// A share as a percentage ("0.5%").
+std::string percent(double share) { return formatNumber(100 * share, "%.2g") + "%"; }
+
 std::string rounds(int n) { return count(n) + (n == 1 ? " round" : " rounds"); }
 
 /// What the edge collapses were for: the count asked for, the worst faces last, or both.
@@ -62,7 +65,8 @@ void logCounts(const TriMesh& input, const SurfaceRemeshResult& r, const RemeshC
                : std::string()) +
           (r.thinEars > 0 ? ", " + count(r.thinEars) +
                                 " removed with thin ears off the boundary (a triangle with two boundary edges and an "
-                                "angle under 30 deg; cut where the distance to the input does not grow)"
+                                "angle under 30 deg; cut where the distance to the input grows by at most " +
+                                percent(SurfaceRemeshParams{}.earSlack) + ", all cuts together)"
                           : std::string()) +
           (r.splitVertices > 0 ? ", " + count(r.splitVertices) +
                                      " added by splitting the edge facing a wide angle of triangles under 30 deg (" +

@@ -746,14 +746,18 @@ TEST_F(FilterInProcess, UniformRemeshLogsItsLastPolishes) {
       << logText();
 }
 
-// The thin ears cut last (SurfaceRemeshParams::cutThinEars) are logged: lion at 10%, its
-// input's own spike on the boundary (as the core run on the filter's input says).
+// The thin ears cut last (SurfaceRemeshParams::cutThinEars) are logged, with their slack
+// (earSlack): lion at 10%, its input's own spike on the boundary (as the core run on the
+// filter's input says).
 TEST_F(FilterInProcess, UniformRemeshLogsItsThinEarsCut) {
   const std::optional<SurfaceRemeshResult> r = uniformAndItsCore("lion.off", 10);
   ASSERT_TRUE(r) << logText();
   ASSERT_GE(r->thinEars, 1);
   EXPECT_EQ(doc.mm()->cm.VN(), r->mesh.vertexCount());
   EXPECT_NE(logText().find(std::to_string(r->thinEars) + " removed with thin ears off the boundary (a triangle"),
+            std::string::npos)
+      << logText();
+  EXPECT_NE(logText().find("cut where the distance to the input grows by at most 0.5%, all cuts together)"),
             std::string::npos)
       << logText();
 }

@@ -150,6 +150,10 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
         (r.jointMoves > 0
              ? "; " + count(r.jointMoves) + " joint moves of the worst faces' vertices (no farther from the input)"
              : std::string()) +
+        (r.shakesKept > 0 ? "; " + count(r.shakesKept) + " of " + count(r.shakesRun) +
+                                " shakes kept (its inner vertices moved at random, then polished: better angles, no "
+                                "farther from the input)"
+                          : std::string()) +
         (relaxed.slidingVertices > 0
              ? "; " + count(relaxed.slidingVertices) + " vertices moved only along the input's boundaries and creases"
              : std::string()) +

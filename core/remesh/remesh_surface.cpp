@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <random>
 #include <string>
 #include <utility>
 
@@ -1199,6 +1200,78 @@ void polishTheFloor(const TriMesh& input, const Prepared& prepared, const Surfac
   r.times.relaxation = relaxationSeconds + lap(clock);
 }
 
+/// The shakes' random numbers: uniform in [0, 1), the same sequence for a seed on every platform.
+class ShakeDraws {
+ public:
+  explicit ShakeDraws(unsigned seed) : generator_(seed) {}
+  double unit() { return static_cast<double>(generator_() >> 8) / static_cast<double>(1u << 24); }
+  double in(double low, double high) { return low + (high - low) * unit(); }
+
+ private:
+  std::mt19937 generator_;
+};
+
+/// One shake (SurfaceRemeshParams::shakes) of `mesh`: each vertex inside an input face moved, with
+/// a chance of kShakeShare, to a random point of an input face whose centroid (`centroids`) lies
+/// within `radius` of it. Returns how many moved.
+int shakeInnerVertices(const TriMesh& input, const std::vector<Vec3>& centroids, double radius, ShakeDraws& draws,
+                       TriMesh& mesh, std::vector<SurfacePoint>& origin) {
+  int moved = 0;
+  std::vector<int> near;
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    const SurfacePoint& at = origin[v];
+    if (at.vertex >= 0 || draws.unit() > SurfaceRemeshParams::kShakeShare || !(at.bary.minCoeff() > 0)) continue;
+    near.clear();
+    for (int f = 0; f < input.faceCount(); ++f)
+      if ((centroids[f] - mesh.positions[v]).norm() < radius) near.push_back(f);
+    if (near.empty()) continue;
+    const int face = near[std::min(static_cast<int>(near.size()) - 1, static_cast<int>(draws.unit() * near.size()))];
+    const double u = draws.in(0.05, 0.9), w = draws.in(0.05, 0.95 - u);
+    origin[v] = SurfacePoint::inFace(face, Vec3(u, w, 1 - u - w));
+    mesh.positions[v] = origin[v].position(input);
+    ++moved;
+  }
+  return moved;
+}
+
+/// The shakes of a small output (SurfaceRemeshParams::shakes), each from the best output so far,
+/// polished (polishWithoutCrossing), kept where betterAndNoFarther and with no more crossing
+/// pairs. `distance` as polishAgain's.
+void shakeSmallOutput(const TriMesh& input, const Prepared& prepared, const SurfaceRemeshParams& params,
+                      SurfaceRemeshResult& r, LastDistance& distance) {
+  const RelaxationParams& relaxation = params.relaxation;
+  if (params.shakes <= 0 || r.mesh.vertexCount() > SurfaceRemeshParams::kRestartVertices ||
+      input.vertexCount() > SurfaceRemeshParams::kRestartInputVertices || relaxation.iterations <= 0 ||
+      !relaxation.raiseSmallestAngle || relaxation.polishMarginDegrees < 0 || r.looksLikeTriangleSoup || r.inputKept)
+    return;
+  auto clock = std::chrono::steady_clock::now();
+  std::vector<Vec3> centroids(input.faceCount());
+  for (int f = 0; f < input.faceCount(); ++f) {
+    const Tri& t = input.triangles[f];
+    centroids[f] = (input.positions[t[0]] + input.positions[t[1]] + input.positions[t[2]]) / 3.0;
+  }
+  const double radius = SurfaceRemeshParams::kShakeRadius * r.mesh.meanEdgeLength();
+  AngleStatistics before = angleStatistics(r.mesh);
+  ShakeDraws draws(params.sampling.seed);
+  distance.of(input, r);
+  const LastDistance start = distance;
+  r.shakesRun = std::min(params.shakes, SurfaceRemeshParams::kShakeWork / r.mesh.vertexCount());
+  for (int k = 0; k < r.shakesRun; ++k) {
+    SurfaceRemeshResult shaken = r;
+    if (shakeInnerVertices(input, centroids, radius, draws, shaken.mesh, shaken.origin) == 0) continue;
+    if (!polishWithoutCrossing(prepared, relaxation, PolishGuard{}, r.crossingPairs, shaken.mesh, shaken.origin, 0))
+      continue;
+    // The shake itself may have made faces cross, which the polish's own check does not see.
+    if (static_cast<int>(selfIntersectingFaces(shaken.mesh).size()) > r.crossingPairs) continue;
+    LastDistance judge = start;  // no farther than before the shakes
+    if (!betterAndNoFarther(input, r, shaken, before, judge)) continue;
+    distance.current = judge.current;
+    r = std::move(shaken);
+    ++r.shakesKept;
+  }
+  r.times.relaxation += lap(clock);
+}
+
 /// An output with more vertices than the input is no remesh (many components and boundary loops
 /// at a small count: boeing.off at 10% needs 5,549 vertices for its 2,741): the input, oriented
 /// (the prepared copy), is kept instead, each vertex its own cell. Not for an input with isolated vertices, which an
@@ -1390,6 +1463,7 @@ Expected<SurfaceRemeshResult> remeshSurface(const TriMesh& input, const Metric& 
   climbJointlyAtLast(input, prepared, p, *r, distance);
   collapseWorstFaces(input, metric, p, *r, distance);
   polishTheFloor(input, prepared, p, *r, distance);
+  shakeSmallOutput(input, prepared, p, *r, distance);
   r->times.prepare += prepared.prepareSeconds;  // once for the call, whatever start was kept
   r->times.engine += prepared.engineSeconds;
   auto clock = std::chrono::steady_clock::now();

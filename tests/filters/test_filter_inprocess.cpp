@@ -732,6 +732,19 @@ TEST_F(FilterInProcess, UniformRemeshLogsItsFloorPolishes) {
   EXPECT_NE(logText().find(line), std::string::npos) << line << " in " << logText();
 }
 
+// The shakes of a small output (SurfaceRemeshParams::shakes) are logged: dragknob at 5%, as the
+// core run on the filter's input says.
+TEST_F(FilterInProcess, UniformRemeshLogsItsShakes) {
+  const std::optional<SurfaceRemeshResult> r = uniformAndItsCore("dragknob.off", 5);
+  ASSERT_TRUE(r) << logText();
+  ASSERT_GE(r->shakesKept, 1);
+  EXPECT_EQ(doc.mm()->cm.VN(), r->mesh.vertexCount());
+  const std::string line = std::to_string(r->shakesKept) + " of " + std::to_string(r->shakesRun) +
+                           " shakes kept (its inner vertices moved at random, then polished: better angles, no "
+                           "farther from the input)";
+  EXPECT_NE(logText().find(line), std::string::npos) << line << " in " << logText();
+}
+
 // The last polishes (SurfaceRemeshParams::lastPolishVertices) are logged: holes at 5%, whose
 // output is polished again once, as the core run on the filter's input says. (Through MeshLab's
 // float coordinates the outputs differ from the core's on the file's doubles: mannequin-devil at

@@ -114,7 +114,8 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgal,
 // output with its thin ears cut too (SurfaceRemeshParams::earsBeforeSplits): mech-holes-shark at
 // 10%; and the collapses at the worst face (SurfaceRemeshParams::worstFaceCollapses): b9_mesh at
 // 5%; and the floor polishes (SurfaceRemeshParams::floorVertices): fandisk_large at 30%; and the
-// thin ears' slack (SurfaceRemeshParams::earSlack): lion at 30%.
+// thin ears' slack (SurfaceRemeshParams::earSlack): lion at 30%; and the shakes of small outputs
+// (SurfaceRemeshParams::shakes): dragknob at 5%.
 class RemeshAnglesAgainstCgalAtOtherCounts : public ::testing::TestWithParam<std::pair<std::string, int>> {};
 
 TEST_P(RemeshAnglesAgainstCgalAtOtherCounts, SmallestAngleAndShareUnder30AtLeastAsGood) {
@@ -144,7 +145,8 @@ INSTANTIATE_TEST_SUITE_P(
         std::pair<std::string, int>{"ChineseDragon-10kv.off", 30}, std::pair<std::string, int>{"patch-13.off", 5},
         std::pair<std::string, int>{"patch-23.off", 5}, std::pair<std::string, int>{"patch-23.off", 10},
         std::pair<std::string, int>{"mech-holes-shark.off", 10}, std::pair<std::string, int>{"b9_mesh.off", 5},
-        std::pair<std::string, int>{"fandisk_large.off", 30}, std::pair<std::string, int>{"lion.off", 30}),
+        std::pair<std::string, int>{"fandisk_large.off", 30}, std::pair<std::string, int>{"lion.off", 30},
+        std::pair<std::string, int>{"dragknob.off", 5}),
     [](const ::testing::TestParamInfo<std::pair<std::string, int>>& p) {
       return test::testNameOfFile(p.param.first) + "_" + std::to_string(p.param.second);
     });
@@ -227,6 +229,17 @@ void expectValidWithoutNewCrossings(const BeforeAndAfter& b) {
   EXPECT_LE(after, before);
 }
 
+/// b's second output (its figures f) against the first: the same count, the smallest angle up by
+/// more than `gain` degrees, no larger share under 30, the oracle's distance to the input no
+/// larger, valid without new crossings (expectValidWithoutNewCrossings).
+void expectSameCountBetterNoFarther(const BeforeAndAfter& b, const Figures& f, double gain) {
+  EXPECT_EQ(b.after->mesh.vertexCount(), b.before->mesh.vertexCount());
+  EXPECT_GT(f.after.smallestDegrees, f.before.smallestDegrees + gain);
+  EXPECT_LE(f.after.shareBelow30, f.before.shareBelow30);
+  EXPECT_LE(f.distanceAfter, f.distanceBefore);
+  expectValidWithoutNewCrossings(b);
+}
+
 /// The first start of a small output alone: no other starts, every crease held
 /// (RelaxationParams::minCreaseLength 0, as the starts hold them).
 void onlyTheFirstStart(SurfaceRemeshParams& p) {
@@ -256,7 +269,11 @@ TEST(RemeshAngles, OtherStartsAreJudgedAtTheInputsFacesToo) {
   EXPECT_GE(f.after.smallestDegrees, f.before.smallestDegrees);
   EXPECT_LE(f.after.shareBelow30, f.before.shareBelow30);
 
-  const BeforeAndAfter dragknob = remeshBeforeAndAfter("dragknob.off", 30, onlyTheFirstStart);
+  // Without the shakes on both sides (they come after the starts): from the first start alone they
+  // reach 48.2 degrees at 7.07% of the diagonal, nearer than the start the others keep (49.8 at
+  // 7.16%), which no shake improves.
+  const BeforeAndAfter dragknob =
+      remeshBeforeAndAfter("dragknob.off", 30, onlyTheFirstStart, [](SurfaceRemeshParams& p) { p.shakes = 0; });
   ASSERT_TRUE(dragknob.before) << dragknob.before.status().message;
   ASSERT_TRUE(dragknob.after) << dragknob.after.status().message;
   EXPECT_GT(dragknob.after->keptStart, 0) << "on this mesh another start is better";
@@ -491,11 +508,7 @@ TEST(RemeshAngles, LastPolishesRaiseTheSmallestAngleNotTheDistance) {
   printFigures("anchor_dense at 30% (" + std::to_string(b.after->lastPolishes) + " last polishes kept)", f);
   EXPECT_EQ(b.before->lastPolishes, 0);
   EXPECT_GE(b.after->lastPolishes, 1);
-  EXPECT_EQ(b.after->mesh.vertexCount(), b.before->mesh.vertexCount());
-  EXPECT_GT(f.after.smallestDegrees, f.before.smallestDegrees + 2.0);
-  EXPECT_LE(f.after.shareBelow30, f.before.shareBelow30);
-  EXPECT_LE(f.distanceAfter, f.distanceBefore);
-  expectValidWithoutNewCrossings(b);
+  expectSameCountBetterNoFarther(b, f, 2.0);
 }
 
 // The last polishes are refused where they take the output farther from the input: dino at 10%
@@ -703,6 +716,33 @@ TEST(RemeshAngles, ThinEarsFartherFromTheInputAreKept) {
   EXPECT_EQ(b.after->thinEars, 0);
   EXPECT_EQ(b.after->mesh.positions, b.before->mesh.positions);
   EXPECT_EQ(b.after->mesh.triangles, b.before->mesh.triangles);
+}
+
+// The shakes of a small output (SurfaceRemeshParams::shakes): dragknob at 5% (8 vertices) without
+// and with them. Without, the starts and the polishes leave 41.12 degrees (CGAL's isotropic
+// remeshing at our count: 43.04); the shakes kept take it above 45, the oracle's two-sided
+// distance no larger (15.705 -> 15.630% of the diagonal), the same count, the input's topology
+// recounted, no crossing faces (CGAL). The shakes' draws are seeded: a second run gives the same
+// output.
+TEST(RemeshAngles, ShakesRaiseTheSmallestAngleOfASmallOutput) {
+  const BeforeAndAfter b = remeshBeforeAndAfter("dragknob.off", 5, [](SurfaceRemeshParams& p) { p.shakes = 0; });
+  ASSERT_TRUE(b.before) << b.before.status().message;
+  ASSERT_TRUE(b.after) << b.after.status().message;
+  const Figures f = figuresOf(b);
+  printFigures("dragknob at 5% (" + std::to_string(b.after->shakesKept) + " of " + std::to_string(b.after->shakesRun) +
+                   " shakes kept)",
+               f);
+  EXPECT_EQ(b.before->shakesKept, 0);
+  EXPECT_GE(b.after->shakesKept, 1);
+  expectSameCountBetterNoFarther(b, f, 2.0);
+
+  SurfaceRemeshParams params;
+  params.sampling.targetCount = b.input.vertexCount() * 5 / 100;
+  params.measure = false;
+  const Expected<SurfaceRemeshResult> again = remeshSurface(b.input, params);
+  ASSERT_TRUE(again) << again.status().message;
+  EXPECT_EQ(again->mesh.positions, b.after->mesh.positions);
+  EXPECT_EQ(again->mesh.triangles, b.after->mesh.triangles);
 }
 
 // The thin ears' slack (SurfaceRemeshParams::earSlack): lion at 30% without it and with it (the

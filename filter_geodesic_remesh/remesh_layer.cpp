@@ -174,10 +174,15 @@ void logQuality(const SurfaceRemeshResult& r, FilterContext& ctx) {
     ctx.log("A small output (at most " + std::to_string(SurfaceRemeshParams::kRestartVertices) +
             " vertices): remeshed " + count(r.starts) + " times (other seeds of the sampling" +
             (r.cornerStarts > 0 ? std::string(", from the corners of the input's boundaries and creases") : "") +
+            (r.boundaryStarts > 0 ? std::string(", with the boundaries sampled less densely") : "") +
             ", each also relaxed with moves further off the surface); " +
             (r.keptStart > 0 ? "kept: " +
                                    (r.keptCorners > 0 ? "sampled from the " + count(r.keptCorners) + " corners"
                                                       : "seed " + std::to_string(r.keptSeed)) +
+                                   (r.keptBoundaryPriority != FpsParams{}.boundaryPriority
+                                        ? ", the boundaries sampled 1/" + formatNumber(r.keptBoundaryPriority, "%g") +
+                                              " of the inner spacing apart"
+                                        : std::string()) +
                                    ", moves up to " + formatNumber(r.keptDeviation, "%g") +
                                    " of the ring (fewer triangles under 30 deg or a larger smallest angle, no "
                                    "farther from the input)"

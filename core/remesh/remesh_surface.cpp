@@ -1345,6 +1345,21 @@ void cornerStarts(const Prepared& prepared, const SurfaceRemeshParams& held, std
   }
 }
 
+/// The starts with the boundaries sampled less densely (SurfaceRemeshParams::boundaryStartPriority),
+/// appended to `starts`: with the relaxation of `held` and, where it is looser, restartDeviation's.
+/// None for an input without boundaries.
+void boundaryStarts(const TriMesh& input, const SurfaceRemeshParams& held, std::vector<SurfaceRemeshParams>& starts) {
+  if (!(held.boundaryStartPriority >= 1.0) || held.boundaryStartPriority == held.sampling.boundaryPriority ||
+      input.topology.boundaryLoops == 0)
+    return;
+  starts.push_back(held);
+  starts.back().sampling.boundaryPriority = held.boundaryStartPriority;
+  if (held.restartDeviation > held.relaxation.maxDeviation) {
+    starts.push_back(starts.back());
+    starts.back().relaxation.maxDeviation = held.restartDeviation;
+  }
+}
+
 /// A small output's first start with every crease held (RelaxationParams::minCreaseLength 0),
 /// when short creases are not: it replaces `r` as the first start, and `r` is returned, to be
 /// judged as the last of the others (the other seeds hold every crease too). Nothing if it fails (`r`
@@ -1379,6 +1394,7 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
                           Progress progress, SurfaceRemeshResult& r) {
   r.keptSeed = p.sampling.seed;
   r.keptDeviation = p.relaxation.maxDeviation;
+  r.keptBoundaryPriority = p.sampling.boundaryPriority;
   if (p.restarts <= 0 || r.mesh.vertexCount() > SurfaceRemeshParams::kRestartVertices ||
       input.vertexCount() > SurfaceRemeshParams::kRestartInputVertices || r.inputKept || r.looksLikeTriangleSoup)
     return {};
@@ -1394,6 +1410,7 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
   if (*freeCreases) held.relaxation.minCreaseLength = 0;
   std::vector<SurfaceRemeshParams> starts = otherStarts(held, r.mesh.vertexCount());
   cornerStarts(prepared, held, starts);
+  boundaryStarts(input, held, starts);
   if (*freeCreases) starts.push_back(p);  // judged last: r's own start, short creases free
   // A swap made the held start's stages the first's, and the free one's among the others.
   double others = *freeCreases ? (*freeCreases)->times.remesh() - r.times.remesh() : 0.0;
@@ -1425,6 +1442,7 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
     kept->keptSeed = start.sampling.seed;
     kept->keptCorners = static_cast<int>(start.sampling.initialSamples.size());
     kept->keptDeviation = start.relaxation.maxDeviation;
+    kept->keptBoundaryPriority = start.sampling.boundaryPriority;
     kept->keptCreasesHeld = !(start.relaxation.minCreaseLength > 0);
   }
   others += lap(clock);
@@ -1437,6 +1455,9 @@ Status restartSmallOutput(const TriMesh& input, const Metric& metric, Prepared& 
       static_cast<int>(std::count_if(starts.begin(), starts.end(),
                                      [](const SurfaceRemeshParams& s) { return !s.sampling.initialSamples.empty(); })) -
       passedOver;
+  r.boundaryStarts = static_cast<int>(std::count_if(starts.begin(), starts.end(), [&](const SurfaceRemeshParams& s) {
+    return s.sampling.boundaryPriority != p.sampling.boundaryPriority;
+  }));
   r.times.restarts = std::max(0.0, others);
   return {};
 }

@@ -732,6 +732,17 @@ TEST_F(FilterInProcess, UniformRemeshLogsItsFloorPolishes) {
   EXPECT_NE(logText().find(line), std::string::npos) << line << " in " << logText();
 }
 
+// The start with the boundaries sampled less densely (SurfaceRemeshParams::boundaryStartPriority)
+// is logged where it is kept: patch-23 at 30%, as the core run on the filter's input says.
+TEST_F(FilterInProcess, UniformRemeshLogsItsBoundaryStart) {
+  const std::optional<SurfaceRemeshResult> r = uniformAndItsCore("patch-23.off", 30);
+  ASSERT_TRUE(r) << logText();
+  ASSERT_EQ(r->keptBoundaryPriority, SurfaceRemeshParams{}.boundaryStartPriority);
+  EXPECT_EQ(doc.mm()->cm.VN(), r->mesh.vertexCount());
+  EXPECT_NE(logText().find(", with the boundaries sampled less densely,"), std::string::npos) << logText();
+  EXPECT_NE(logText().find("the boundaries sampled 1/1.2 of the inner spacing apart"), std::string::npos) << logText();
+}
+
 // The shakes of a small output (SurfaceRemeshParams::shakes) are logged: dragknob at 5%, as the
 // core run on the filter's input says.
 TEST_F(FilterInProcess, UniformRemeshLogsItsShakes) {

@@ -1,16 +1,17 @@
 // Triangle quality of the uniform remeshing at its defaults against CGAL's isotropic remeshing
-// (issue 20, point 3), over the data set at 10%:
-// - on the meshes listed below, the smallest angle and the share of triangles with an angle under
-//   30 degrees at least as good as CGAL's with 10 iterations at the same count (CGAL runs here, on
-//   the same mesh). These are the meshes where the relaxation that raises the smallest angle,
-//   the vertices sliding along boundaries and creases, the angle rescue (remesh_surface.h) and
-//   the polish of the final output (polishOnSurface: homer, oblong, retinal, sphere966, blobby_3cc,
-//   femur; pig by its flips with climbs of the faces under 30 degrees) and the other starts of
-//   a small output (SurfaceRemeshParams::restarts: patch-20; more of them for the smallest,
-//   restartsFor: blob, patch-13) brought ours from worse to as good; docs/BENCHMARKS.md lists the whole data set, the meshes
-//   where ours is still worse and why.
+// (issue 20, point 3), over the data set at 5%, 10% and 30%:
+// - on every mesh of the population listed below, the smallest angle and the share of triangles
+//   with an angle under 30 degrees at least as good as CGAL's with 10 iterations at the same count
+//   (CGAL runs here, on the same mesh). At 10% the relaxation that raises the smallest angle, the
+//   vertices sliding along boundaries and creases, the angle rescue (remesh_surface.h) and the
+//   polish of the final output (polishOnSurface: homer, oblong, retinal, sphere966, blobby_3cc,
+//   femur; pig by its flips with climbs of the faces under 30 degrees) and the other starts of a
+//   small output (SurfaceRemeshParams::restarts: patch-20; more of them for the smallest,
+//   restartsFor: blob, patch-13) brought ours from worse to as good; the other stages and counts
+//   are named with the list.
 // - no angle under 20 degrees on every closed mesh of the data set whose input has no angle
 //   under 1 degree.
+// - each stage's own effect, with it and without.
 // Angles are recounted here from the positions (test::recountAngles), not taken from the result.
 #include <gtest/gtest.h>
 
@@ -73,24 +74,8 @@ void expectAtLeastAsGoodAsCgal(const std::string& name, int percent) {
   EXPECT_LE(a.shareBelow30, c.shareBelow30);
 }
 
-class RemeshAnglesAgainstCgal : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(RemeshAnglesAgainstCgal, SmallestAngleAndShareUnder30AtLeastAsGood) {
-  expectAtLeastAsGoodAsCgal(GetParam(), 10);
-}
-
-INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgal,
-                         ::testing::Values("ALSTOM_TEST4.off", "bear.off", "bear_bis.off", "blob.off", "blobby.off",
-                                           "blobby_3cc.off", "ChineseDragon-10kv.off", "cube-meshed.off",
-                                           "dragknob.off", "ellipe0.003.off", "ellipsoid.off", "fandisk.off",
-                                           "fandisk_large.off", "femur.off", "hand.off", "holes.off", "homer.off",
-                                           "knot1.off", "knot2.off", "larger_sphere.off", "patch-20.off",
-                                           "mannequin-devil.off", "mesh_with_border.off", "oblong.off", "part.off",
-                                           "patch-13.off", "pig.off", "retinal.off", "sphere.ply", "sphere966.off",
-                                           "three_peaks.off"),
-                         [](const ::testing::TestParamInfo<std::string>& p) { return test::testNameOfFile(p.param); });
-
-// The same comparison at 5% and 30%, on the meshes the polish's flips (to fewer faces under 30
+// Among these cases, the stages that brought ours from worse to as good: at 10%, those the file's
+// first lines name; at 5% and 30% (and 10% where said), the polish's flips (to fewer faces under 30
 // degrees, flipToBetterAngles; the worst face's edges flipped with climbs after, flipAndClimb)
 // brought from worse to as good: patch-20, bear_bis, blobby_3cc, ellipe0.003 at 5%;
 // elephant-with-holes, double-torus-3-holes, fandisk, knot2 at 30%; and the flips with climbs of
@@ -117,40 +102,143 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgal,
 // thin ears' slack (SurfaceRemeshParams::earSlack): lion at 30%; and the shakes of small outputs
 // (SurfaceRemeshParams::shakes): dragknob at 5%; and the starts with the boundaries sampled less
 // densely (SurfaceRemeshParams::boundaryStartPriority): patch-23 at 30%.
-class RemeshAnglesAgainstCgalAtOtherCounts : public ::testing::TestWithParam<std::pair<std::string, int>> {};
+//
+// The whole of issue 20's population at 5%, 10% and 30% (every case listed): the data set's meshes
+// (scripts/setup.sh) of up to 20,000 vertices whose input is manifold and oriented, boeing.off left
+// out (its remesh would need more vertices than it has, so its own triangles, which cross, are
+// kept: RemeshCrossing.NoMoreCrossingsThanAnInputThatCrossesItself), at the counts where at
+// least 4 vertices are asked for (the others have fewer at 5% or 10%). The four larger meshes
+// (armadillo, bunny00, diplodocus, refined_elephant) are left to bench_remesh, for the suite's
+// time. docs/BENCHMARKS.md ("Angles over the data set") says which stage brought which output
+// from worse to as good.
+const char* const kAtEveryCount[] = {
+    "ALSTOM_TEST4.off",
+    "anchor.off",
+    "anchor_dense.off",
+    "b9_mesh.off",
+    "bear.off",
+    "bear_bis.off",
+    "blade.off",
+    "blob-closed.off",
+    "blob.off",
+    "blobby.off",
+    "blobby_3cc.off",
+    "bones.off",
+    "bull.off",
+    "cactus.off",
+    "camel.off",
+    "cheese.off",
+    "ChineseDragon-10kv.off",
+    "couplingdown.off",
+    "cow.off",
+    "cube-meshed.off",
+    "cylinder.off",
+    "cylinder_locally_refined.off",
+    "dino.off",
+    "double-torus-3-holes.off",
+    "double-torus-example.off",
+    "dragknob.off",
+    "eight.off",
+    "elephant-with-holes.off",
+    "elephant.off",
+    "elk.off",
+    "ellipe0.003.off",
+    "ellipsoid.off",
+    "fandisk.off",
+    "fandisk_large.off",
+    "femur.off",
+    "geosphere.off",
+    "hand.off",
+    "handle.off",
+    "head.off",
+    "helmet.off",
+    "holes.off",
+    "homer.off",
+    "horizons.off",
+    "itemb.off",
+    "joint.off",
+    "knot.off",
+    "knot1.off",
+    "knot2.off",
+    "larger_sphere.off",
+    "lion-head.off",
+    "lion.off",
+    "man.off",
+    "mannequin-devil.off",
+    "mask_cone.off",
+    "mech-holes-shark.off",
+    "mesh_with_border.off",
+    "mpi.off",
+    "mpi_triang.off",
+    "mushroom.off",
+    "nefertiti.off",
+    "oblong.off",
+    "part.off",
+    "patch-01.off",
+    "patch-13.off",
+    "patch-20.off",
+    "patch-21.off",
+    "patch-23.off",
+    "patch-30.off",
+    "pig.off",
+    "pinion.off",
+    "pinion_small.off",
+    "pipe.off",
+    "plane.off",
+    "poly2x^2+y^2-0.062500.off",
+    "retinal.off",
+    "rotor.off",
+    "rotor_small.off",
+    "sphere.off",
+    "sphere.ply",
+    "sphere.stl",
+    "sphere966.off",
+    "spool.off",
+    "three_peaks.off",
+    "triceratops.off",
+    "turbine.off",
+    "u.off",
+};
+const char* const kFrom10Percent[] = {
+    "cross.off",
+    "cross_quad.off",
+};
+const char* const kAt30PercentOnly[] = {
+    "3torus.off",
+    "corner.off",
+    "corner_tris_with_hole.off",
+    "corner_with_hole.off",
+    "corner_with_sharp_edge.off",
+    "hole.off",
+    "P.off",
+    "quads_to_stitch.off",
+    "star.off",
+    "torus_quad.off",
+    "tripod.off",
+};
 
-TEST_P(RemeshAnglesAgainstCgalAtOtherCounts, SmallestAngleAndShareUnder30AtLeastAsGood) {
+std::vector<std::pair<std::string, int>> populationCases() {
+  std::vector<std::pair<std::string, int>> cases;
+  for (const int percent : {5, 10, 30}) {
+    for (const char* name : kAtEveryCount) cases.emplace_back(name, percent);
+    if (percent >= 10)
+      for (const char* name : kFrom10Percent) cases.emplace_back(name, percent);
+    if (percent == 30)
+      for (const char* name : kAt30PercentOnly) cases.emplace_back(name, percent);
+  }
+  return cases;
+}
+
+class RemeshAnglesAgainstCgalOverTheDataSet : public ::testing::TestWithParam<std::pair<std::string, int>> {};
+
+TEST_P(RemeshAnglesAgainstCgalOverTheDataSet, SmallestAngleAndShareUnder30AtLeastAsGood) {
   expectAtLeastAsGoodAsCgal(GetParam().first, GetParam().second);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Meshes, RemeshAnglesAgainstCgalAtOtherCounts,
-    ::testing::Values(
-        std::pair<std::string, int>{"patch-20.off", 5}, std::pair<std::string, int>{"bear_bis.off", 5},
-        std::pair<std::string, int>{"blobby_3cc.off", 5}, std::pair<std::string, int>{"ellipe0.003.off", 5},
-        std::pair<std::string, int>{"elephant-with-holes.off", 30},
-        std::pair<std::string, int>{"double-torus-3-holes.off", 30}, std::pair<std::string, int>{"fandisk.off", 30},
-        std::pair<std::string, int>{"knot2.off", 30}, std::pair<std::string, int>{"blobby_3cc.off", 30},
-        std::pair<std::string, int>{"patch-30.off", 5}, std::pair<std::string, int>{"blob-closed.off", 30},
-        std::pair<std::string, int>{"corner_tris_with_hole.off", 30}, std::pair<std::string, int>{"sphere.off", 5},
-        std::pair<std::string, int>{"sphere.ply", 5}, std::pair<std::string, int>{"itemb.off", 5},
-        std::pair<std::string, int>{"ALSTOM_TEST4.off", 5}, std::pair<std::string, int>{"knot1.off", 30},
-        std::pair<std::string, int>{"larger_sphere.off", 30}, std::pair<std::string, int>{"corner_with_hole.off", 30},
-        std::pair<std::string, int>{"femur.off", 5}, std::pair<std::string, int>{"femur.off", 30},
-        std::pair<std::string, int>{"knot2.off", 5}, std::pair<std::string, int>{"b9_mesh.off", 10},
-        std::pair<std::string, int>{"b9_mesh.off", 30}, std::pair<std::string, int>{"mech-holes-shark.off", 5},
-        std::pair<std::string, int>{"ellipsoid.off", 5}, std::pair<std::string, int>{"pig.off", 5},
-        std::pair<std::string, int>{"cylinder_locally_refined.off", 30},
-        std::pair<std::string, int>{"mannequin-devil.off", 5}, std::pair<std::string, int>{"anchor_dense.off", 30},
-        std::pair<std::string, int>{"lion.off", 10}, std::pair<std::string, int>{"ChineseDragon-10kv.off", 5},
-        std::pair<std::string, int>{"ChineseDragon-10kv.off", 30}, std::pair<std::string, int>{"patch-13.off", 5},
-        std::pair<std::string, int>{"patch-23.off", 5}, std::pair<std::string, int>{"patch-23.off", 10},
-        std::pair<std::string, int>{"mech-holes-shark.off", 10}, std::pair<std::string, int>{"b9_mesh.off", 5},
-        std::pair<std::string, int>{"fandisk_large.off", 30}, std::pair<std::string, int>{"lion.off", 30},
-        std::pair<std::string, int>{"dragknob.off", 5}, std::pair<std::string, int>{"patch-23.off", 30}),
-    [](const ::testing::TestParamInfo<std::pair<std::string, int>>& p) {
-      return test::testNameOfFile(p.param.first) + "_" + std::to_string(p.param.second);
-    });
+INSTANTIATE_TEST_SUITE_P(Meshes, RemeshAnglesAgainstCgalOverTheDataSet, ::testing::ValuesIn(populationCases()),
+                         [](const ::testing::TestParamInfo<std::pair<std::string, int>>& p) {
+                           return test::testNameOfFile(p.param.first) + "_" + std::to_string(p.param.second);
+                         });
 
 /// `before` and `after`, remeshes of `input` at the same target without and with more starts:
 /// the same count, the input's topology (recounted), no crossing faces (CGAL's test), both angle
@@ -785,8 +873,8 @@ TEST(RemeshAngles, ShakesRaiseTheSmallestAngleOfASmallOutput) {
 // defaults; both cut last only). With it, its boundary's spike is cut: the smallest angle 12.0 ->
 // 22.7 degrees, one face fewer under 30, the oracle's two-sided distance 1.2373 -> 1.2388% of the
 // diagonal, farther but within the slack. (With the ears cut before the splits too, as the
-// defaults do, the output reaches 30.0 degrees and no face under 30: RemeshAnglesAgainstCgal-
-// AtOtherCounts, lion at 30%, against CGAL's 16.7 degrees and 0.16%.)
+// defaults do, the output reaches 30.0 degrees and no face under 30: RemeshAnglesAgainstCgalOver-
+// TheDataSet, lion at 30%, against CGAL's 16.7 degrees and 0.16%.)
 TEST(RemeshAngles, ThinEarsAreCutWithinTheSlack) {
   expectThinEarsCut(
       "lion.off", 30, 10.0, [](SurfaceRemeshParams& p) { p.earSlack = 0; }, SurfaceRemeshParams{}.earSlack);

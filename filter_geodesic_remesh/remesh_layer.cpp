@@ -13,7 +13,7 @@ namespace {
 
 std::string count(int n) { return std::to_string(n); }
 /// "1 round", "n rounds".
-/// A share as a percentage ("0.5%").
+/// A share as a percentage ("2%").
 std::string percent(double share) { return formatNumber(100 * share, "%.2g") + "%"; }
 
 std::string rounds(int n) { return count(n) + (n == 1 ? " round" : " rounds"); }

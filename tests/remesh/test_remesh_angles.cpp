@@ -520,6 +520,11 @@ void expectSplitsMendTheAngles(const std::string& name, int percent, double gain
   EXPECT_LT(c.shareBelow30, a.shareBelow30);
   EXPECT_LE(d1, d0);
   expectValidWithoutNewCrossings(b);
+  // The result's own topology, which the filter logs, is the one recounted from its faces.
+  const test::Recount recounted = test::recount(b.after->mesh.triangles, b.after->mesh.vertexCount());
+  EXPECT_EQ(b.after->mesh.topology.components, recounted.components);
+  EXPECT_EQ(b.after->mesh.topology.genus, recounted.genusSum);
+  EXPECT_EQ(b.after->mesh.topology.boundaryLoops, recounted.boundaryLoops);
 }
 
 // The splits of faces under 30 degrees held by a wide angle (SurfaceRemeshParams::splitRounds) on
